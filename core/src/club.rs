@@ -1,0 +1,374 @@
+//! The club head: rigid body parameters and the face ellipsoid, validated once.
+//!
+//! Frames (PHYSICS.md): the club frame C sits at the head's centre of mass; the face frame
+//! E is C rotated by the static loft α about +z_C (`R_CE = Rz(α)`), x_E out of the face.
+
+use crate::error::{Error, Field, Reason, Result};
+use crate::real::{Real, lit};
+use crate::units::deg;
+use crate::validate::{
+    finite, finite_matrix, finite_vector, in_range, positive, positive_or_infinite,
+};
+use nalgebra::{Matrix3, Vector3};
+
+/// Club head parameters as a user gives them (SI units, angles in radians). Turn into a
+/// validated [`ClubHead`] with [`ClubSpec::validate`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct ClubSpec<T: Real> {
+    /// Head mass m_c (kg).
+    pub mass_kg: T,
+    /// Inertia tensor about the CoM, in the club frame C (kg·m²). Symmetric positive definite.
+    pub inertia_kgm2: Matrix3<T>,
+    /// Static loft α (rad).
+    pub loft_rad: T,
+    /// Roll radius b: curvature up the face (m); `+∞` for a flat face.
+    pub roll_radius_m: T,
+    /// Bulge radius c: curvature across the face (m); `+∞` for a flat face.
+    pub bulge_radius_m: T,
+    /// Ellipsoid x radius a (m). `None`: equal to the bulge radius c when that is finite,
+    /// else to the roll radius b, else flat.
+    pub face_depth_radius_m: Option<T>,
+    /// Vector from the CoM to the face centre, in the face frame E (m).
+    pub cg_to_face_m: Vector3<T>,
+    /// Normal coefficient of restitution e, in [0, 1].
+    pub restitution: T,
+}
+
+/// A named, documented club preset.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct Preset {
+    /// Short name used on the command line.
+    pub name: &'static str,
+    /// What it is and where its numbers come from.
+    pub source: &'static str,
+    /// Mass (kg).
+    pub mass_kg: f64,
+    /// Principal inertias Ixx, Iyy, Izz in C (kg·m²).
+    pub inertia_kgm2: [f64; 3],
+    /// Static loft (degrees).
+    pub loft_deg: f64,
+    /// Roll radius (m); `f64::INFINITY` for flat.
+    pub roll_radius_m: f64,
+    /// Bulge radius (m); `f64::INFINITY` for flat.
+    pub bulge_radius_m: f64,
+    /// CoM → face centre along x_E (m).
+    pub cg_to_face_m: f64,
+    /// Coefficient of restitution.
+    pub restitution: f64,
+}
+
+/// The built-in club presets. The driver is the measured head of PHYSICS.md; the others
+/// are **estimates** (typical published head masses, lofts and MOI magnitudes), marked so.
+pub const PRESETS: [Preset; 5] = [
+    Preset {
+        name: "driver",
+        source: "Ping i15 driver head, measured (Petersen & McPhee); PHYSICS.md defaults",
+        mass_kg: 0.200,
+        inertia_kgm2: [3.0e-4, 4.2e-4, 2.2e-4],
+        loft_deg: 10.5,
+        roll_radius_m: 0.30,
+        bulge_radius_m: 0.30,
+        cg_to_face_m: 0.040,
+        restitution: 0.83,
+    },
+    Preset {
+        name: "3wood",
+        source: "estimate: typical 15° fairway wood (215 g, bulge/roll 0.28 m, shallower CG)",
+        mass_kg: 0.215,
+        inertia_kgm2: [1.9e-4, 2.8e-4, 1.5e-4],
+        loft_deg: 15.0,
+        roll_radius_m: 0.28,
+        bulge_radius_m: 0.28,
+        cg_to_face_m: 0.030,
+        restitution: 0.82,
+    },
+    Preset {
+        name: "7iron",
+        source: "estimate: typical cavity-back 7-iron (262 g, 34°, flat face); as golden case iron7_flat_face",
+        mass_kg: 0.262,
+        inertia_kgm2: [1.1e-4, 2.6e-4, 6.0e-5],
+        loft_deg: 34.0,
+        roll_radius_m: f64::INFINITY,
+        bulge_radius_m: f64::INFINITY,
+        cg_to_face_m: 0.008,
+        restitution: 0.80,
+    },
+    Preset {
+        name: "pw",
+        source: "estimate: typical pitching wedge (285 g, 46°, flat face)",
+        mass_kg: 0.285,
+        inertia_kgm2: [1.0e-4, 2.7e-4, 6.5e-5],
+        loft_deg: 46.0,
+        roll_radius_m: f64::INFINITY,
+        bulge_radius_m: f64::INFINITY,
+        cg_to_face_m: 0.007,
+        restitution: 0.78,
+    },
+    Preset {
+        name: "lw58",
+        source: "estimate: typical 58° lob wedge (295 g, flat face); as golden case wedge_58_slow",
+        mass_kg: 0.295,
+        inertia_kgm2: [1.0e-4, 2.8e-4, 7.0e-5],
+        loft_deg: 58.0,
+        roll_radius_m: f64::INFINITY,
+        bulge_radius_m: f64::INFINITY,
+        cg_to_face_m: 0.006,
+        restitution: 0.76,
+    },
+];
+
+impl Preset {
+    /// Looks a preset up by name.
+    #[must_use]
+    pub fn find(name: &str) -> Option<&'static Preset> {
+        PRESETS.iter().find(|p| p.name == name)
+    }
+
+    /// This preset's parameters in precision `T`.
+    #[must_use]
+    pub fn spec<T: Real>(&self) -> ClubSpec<T> {
+        let [ixx, iyy, izz] = self.inertia_kgm2;
+        ClubSpec {
+            mass_kg: lit(self.mass_kg),
+            inertia_kgm2: Matrix3::from_diagonal(&Vector3::new(lit(ixx), lit(iyy), lit(izz))),
+            loft_rad: deg(lit(self.loft_deg)),
+            roll_radius_m: lit(self.roll_radius_m),
+            bulge_radius_m: lit(self.bulge_radius_m),
+            face_depth_radius_m: None,
+            cg_to_face_m: Vector3::new(lit(self.cg_to_face_m), T::zero(), T::zero()),
+            restitution: lit(self.restitution),
+        }
+    }
+}
+
+impl<T: Real> ClubSpec<T> {
+    /// The driver of PHYSICS.md (measured Ping i15 head).
+    #[must_use]
+    pub fn driver() -> Self {
+        PRESETS[0].spec()
+    }
+
+    /// Validates every parameter and precomputes what the solvers need.
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] naming the first bad parameter: non-finite values,
+    /// non-positive mass or radii, an inertia tensor that is not symmetric positive
+    /// definite, `e` outside [0, 1], an infinite depth radius with a curved face.
+    pub fn validate(&self) -> Result<ClubHead<T>> {
+        let mass_kg = positive(self.mass_kg, Field::ClubMass)?;
+        let inertia = validate_inertia(&self.inertia_kgm2)?;
+        let inverse_inertia = inertia
+            .try_inverse()
+            .filter(|m| m.iter().all(|x| x.is_finite()))
+            .ok_or(Error::invalid(
+                Field::ClubInertia,
+                Reason::NotPositiveDefinite,
+            ))?;
+        let loft_rad = in_range(self.loft_rad, -T::frac_pi_2(), T::frac_pi_2(), Field::Loft)?;
+        let b = positive_or_infinite(self.roll_radius_m, Field::RollRadius)?;
+        let c = positive_or_infinite(self.bulge_radius_m, Field::BulgeRadius)?;
+        let a = match self.face_depth_radius_m {
+            Some(a) => positive_or_infinite(a, Field::FaceDepthRadius)?,
+            None if c.is_finite() => c,
+            None => b,
+        };
+        let face = FaceShape::new(a, b, c)?;
+        let cg_to_face_m = finite_vector(&self.cg_to_face_m, Field::CgToFace)?;
+        let restitution = in_range(self.restitution, T::zero(), T::one(), Field::Restitution)?;
+        finite(restitution, Field::Restitution)?;
+        Ok(ClubHead {
+            mass_kg,
+            inertia_kgm2: inertia,
+            inverse_inertia,
+            loft_rad,
+            face,
+            cg_to_face_m,
+            restitution,
+        })
+    }
+}
+
+/// Symmetric (to rounding) and positive definite (Cholesky succeeds).
+fn validate_inertia<T: Real>(m: &Matrix3<T>) -> Result<Matrix3<T>> {
+    let m = finite_matrix(m, Field::ClubInertia)?;
+    let scale = m.amax();
+    let asym = (m - m.transpose()).amax();
+    if asym > lit::<T>(64.0) * T::default_epsilon() * scale {
+        return Err(Error::invalid(Field::ClubInertia, Reason::NotSymmetric));
+    }
+    let sym = (m + m.transpose()) * lit::<T>(0.5);
+    // Cholesky by hand: every leading minor positive.
+    let d0 = sym[(0, 0)];
+    let minor2 = sym[(0, 0)] * sym[(1, 1)] - sym[(0, 1)] * sym[(1, 0)];
+    let det = sym.determinant();
+    if !(d0 > T::zero() && minor2 > T::zero() && det > T::zero()) {
+        return Err(Error::invalid(
+            Field::ClubInertia,
+            Reason::NotPositiveDefinite,
+        ));
+    }
+    Ok(sym)
+}
+
+/// The face ellipsoid `x²/a² + y²/b² + z²/c² = 1` in the face frame E, stored as the
+/// curvature terms the contact geometry needs, so that flat faces (b, c → ∞) lose no
+/// precision: `1/b²`, `1/c²` (zero when flat) and `a/b²`, `a/c²`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct FaceShape<T> {
+    /// Depth radius a (m), possibly `+∞` for a flat face.
+    pub depth_radius_m: T,
+    /// 1/b² (1/m²).
+    pub inv_roll_sq: T,
+    /// 1/c² (1/m²).
+    pub inv_bulge_sq: T,
+    /// a/b² (1/m).
+    pub depth_over_roll_sq: T,
+    /// a/c² (1/m).
+    pub depth_over_bulge_sq: T,
+}
+
+impl<T: Real> FaceShape<T> {
+    fn new(a: T, b: T, c: T) -> Result<Self> {
+        let inv_sq = |r: T| {
+            if r.is_finite() {
+                T::one() / (r * r)
+            } else {
+                T::zero()
+            }
+        };
+        // a/r²: zero for a flat direction; undefined (rejected) for a curved direction
+        // with an infinite depth radius.
+        let ratio = |r: T| {
+            if !r.is_finite() {
+                Ok(T::zero())
+            } else if a.is_finite() {
+                Ok(a / (r * r))
+            } else {
+                Err(Error::invalid(Field::FaceDepthRadius, Reason::OutOfRange))
+            }
+        };
+        let shape = Self {
+            depth_radius_m: a,
+            inv_roll_sq: inv_sq(b),
+            inv_bulge_sq: inv_sq(c),
+            depth_over_roll_sq: ratio(b)?,
+            depth_over_bulge_sq: ratio(c)?,
+        };
+        // Tiny radii overflow 1/r² to ∞: reject rather than compute with it.
+        if shape.inv_roll_sq.is_finite() && shape.depth_over_roll_sq.is_finite() {
+            if shape.inv_bulge_sq.is_finite() && shape.depth_over_bulge_sq.is_finite() {
+                return Ok(shape);
+            }
+            return Err(Error::invalid(Field::BulgeRadius, Reason::OutOfRange));
+        }
+        Err(Error::invalid(Field::RollRadius, Reason::OutOfRange))
+    }
+}
+
+/// A validated club head. Build it with [`ClubSpec::validate`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct ClubHead<T: Real> {
+    mass_kg: T,
+    inertia_kgm2: Matrix3<T>,
+    inverse_inertia: Matrix3<T>,
+    loft_rad: T,
+    face: FaceShape<T>,
+    cg_to_face_m: Vector3<T>,
+    restitution: T,
+}
+
+impl<T: Real> ClubHead<T> {
+    /// Mass m_c (kg).
+    #[must_use]
+    pub fn mass_kg(&self) -> T {
+        self.mass_kg
+    }
+    /// Inertia about the CoM in C (kg·m²), symmetrised.
+    #[must_use]
+    pub fn inertia_kgm2(&self) -> &Matrix3<T> {
+        &self.inertia_kgm2
+    }
+    /// Inverse inertia in C (1/(kg·m²)).
+    #[must_use]
+    pub fn inverse_inertia(&self) -> &Matrix3<T> {
+        &self.inverse_inertia
+    }
+    /// Static loft α (rad).
+    #[must_use]
+    pub fn loft_rad(&self) -> T {
+        self.loft_rad
+    }
+    /// The face ellipsoid.
+    #[must_use]
+    pub fn face(&self) -> &FaceShape<T> {
+        &self.face
+    }
+    /// CoM → face centre in E (m).
+    #[must_use]
+    pub fn cg_to_face_m(&self) -> &Vector3<T> {
+        &self.cg_to_face_m
+    }
+    /// Coefficient of restitution e.
+    #[must_use]
+    pub fn restitution(&self) -> T {
+        self.restitution
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn presets_validate_in_both_precisions() {
+        for p in PRESETS {
+            assert!(p.spec::<f64>().validate().is_ok(), "{}", p.name);
+            assert!(p.spec::<f32>().validate().is_ok(), "{}", p.name);
+        }
+    }
+
+    #[test]
+    fn names_the_bad_parameter() {
+        let mut s = ClubSpec::<f64>::driver();
+        s.restitution = 1.2;
+        assert_eq!(
+            s.validate(),
+            Err(Error::invalid(Field::Restitution, Reason::OutOfRange))
+        );
+        let mut s = ClubSpec::<f64>::driver();
+        s.inertia_kgm2[(0, 1)] = 1e-4;
+        assert_eq!(
+            s.validate(),
+            Err(Error::invalid(Field::ClubInertia, Reason::NotSymmetric))
+        );
+        let mut s = ClubSpec::<f64>::driver();
+        s.inertia_kgm2[(2, 2)] = -1e-4;
+        assert_eq!(
+            s.validate(),
+            Err(Error::invalid(
+                Field::ClubInertia,
+                Reason::NotPositiveDefinite
+            ))
+        );
+        let mut s = ClubSpec::<f64>::driver();
+        s.bulge_radius_m = f64::NAN;
+        assert_eq!(
+            s.validate(),
+            Err(Error::invalid(Field::BulgeRadius, Reason::NotFinite))
+        );
+    }
+
+    #[test]
+    fn flat_face_has_zero_curvature() {
+        let h = Preset::find("7iron").map(|p| p.spec::<f32>().validate());
+        let Some(Ok(h)) = h else {
+            panic!("7iron preset")
+        };
+        assert_eq!(h.face().inv_roll_sq, 0.0);
+        assert_eq!(h.face().depth_over_bulge_sq, 0.0);
+    }
+}

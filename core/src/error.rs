@@ -1,0 +1,279 @@
+//! The one error type of the core: small, `Copy`, no allocation.
+//!
+//! Every public entry point validates its inputs once and returns [`Error`]; the inner
+//! numerical code runs only on validated data. Nothing in the core panics or returns NaN.
+
+use core::fmt;
+
+/// Which input was rejected.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+#[non_exhaustive]
+pub enum Field {
+    // --- club head ---
+    /// Club head mass (kg).
+    ClubMass,
+    /// Club head inertia tensor about its centre of mass (kg·m²).
+    ClubInertia,
+    /// Static loft α (rad).
+    Loft,
+    /// Roll radius b, curvature up the face (m).
+    RollRadius,
+    /// Bulge radius c, curvature across the face (m).
+    BulgeRadius,
+    /// Ellipsoid x radius a, the face's depth radius (m).
+    FaceDepthRadius,
+    /// Club centre of mass → face centre, in the face frame (m).
+    CgToFace,
+    /// Coefficient of restitution e.
+    Restitution,
+    // --- ball ---
+    /// Ball mass (kg).
+    BallMass,
+    /// Ball radius (m).
+    BallRadius,
+    // --- club delivery ---
+    /// Club head speed (m/s).
+    ClubSpeed,
+    /// Attack angle (rad).
+    AttackAngle,
+    /// Club path (rad).
+    ClubPath,
+    /// Face angle (rad).
+    FaceAngle,
+    /// Dynamic loft (rad).
+    DynamicLoft,
+    /// Lie / face tilt (rad).
+    Lie,
+    /// Club angular velocity before impact (rad/s).
+    ClubSpin,
+    /// Club velocity given directly (m/s).
+    ClubVelocity,
+    /// Club orientation given directly (rotation C → G).
+    ClubOrientation,
+    /// Impact location up the face (m).
+    ImpactHeight,
+    /// Impact location toward the toe (m).
+    ImpactToe,
+    /// Ball velocity before impact or at launch (m/s).
+    BallVelocity,
+    /// Ball spin before impact or at launch (rad/s).
+    BallSpin,
+    // --- launch (flight input) ---
+    /// Ball speed at launch (m/s).
+    BallSpeed,
+    /// Launch angle (rad).
+    LaunchAngle,
+    /// Launch direction (rad).
+    LaunchDirection,
+    /// Backspin (rad/s).
+    Backspin,
+    /// Sidespin (rad/s).
+    Sidespin,
+    /// Launch position (m).
+    LaunchPosition,
+    // --- scene ---
+    /// Air density (kg/m³).
+    AirDensity,
+    /// Air temperature (°C).
+    Temperature,
+    /// Relative humidity (0..1).
+    Humidity,
+    /// Air pressure (Pa).
+    Pressure,
+    /// Altitude above sea level (m).
+    Altitude,
+    /// Wind velocity (m/s).
+    Wind,
+    /// Wind reference height (m).
+    WindReferenceHeight,
+    /// Wind profile exponent.
+    WindExponent,
+    /// Landing height (m).
+    LandingHeight,
+    /// Flight time limit (s).
+    TimeLimit,
+    /// Gravitational acceleration (m/s²).
+    Gravity,
+    /// Trajectory recording interval (s).
+    RecordInterval,
+    // --- numerics ---
+    /// Integrator step size (s).
+    Step,
+    /// Integrator tolerance.
+    Tolerance,
+}
+
+/// Why an input was rejected.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+#[non_exhaustive]
+pub enum Reason {
+    /// NaN or ±infinity where a finite number is needed.
+    NotFinite,
+    /// Zero or negative where a positive number is needed.
+    NotPositive,
+    /// Negative where zero or more is needed.
+    Negative,
+    /// Outside its documented range.
+    OutOfRange,
+    /// A matrix that must be symmetric is not.
+    NotSymmetric,
+    /// A matrix that must be symmetric positive definite is not.
+    NotPositiveDefinite,
+    /// A rotation matrix that is not orthonormal with determinant +1.
+    NotRotation,
+}
+
+/// Everything that can go wrong in the core.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+#[non_exhaustive]
+pub enum Error {
+    /// An input value is invalid: which one, and why.
+    InvalidInput {
+        /// The rejected input.
+        field: Field,
+        /// Why it was rejected.
+        reason: Reason,
+    },
+    /// The impact point is off the face ellipsoid (s² ≤ 0, or so close to 0 that the
+    /// normal is unreliable in the chosen precision).
+    OffFace,
+    /// The club is not approaching the ball along the contact normal (n·u⁰ ≥ 0): no impact.
+    NoApproach,
+    /// The impact system is numerically singular (a pivot fell below its scale-aware
+    /// threshold): the inputs are too ill-conditioned for the chosen precision.
+    Singular,
+    /// The ball never comes down through the landing height (e.g. a target above the apex).
+    NoLanding,
+    /// The flight time limit was reached before landing.
+    TimeLimit,
+    /// The adaptive integrator could not meet its tolerance without the step size
+    /// underflowing (the tolerance is too tight for the chosen precision).
+    StepSizeUnderflow,
+    /// A fixed-step integrator produced a non-finite state: the step is too large for
+    /// this flight (explicit methods are only conditionally stable).
+    Unstable,
+}
+
+/// Result alias of the core.
+pub type Result<T> = core::result::Result<T, Error>;
+
+impl Error {
+    /// Shorthand for [`Error::InvalidInput`].
+    #[must_use]
+    pub const fn invalid(field: Field, reason: Reason) -> Self {
+        Self::InvalidInput { field, reason }
+    }
+}
+
+impl Field {
+    /// A short human name, as a launch-monitor user would read it.
+    #[must_use]
+    pub const fn name(self) -> &'static str {
+        match self {
+            Self::ClubMass => "club mass",
+            Self::ClubInertia => "club inertia",
+            Self::Loft => "loft",
+            Self::RollRadius => "roll radius",
+            Self::BulgeRadius => "bulge radius",
+            Self::FaceDepthRadius => "face depth radius",
+            Self::CgToFace => "CG-to-face offset",
+            Self::Restitution => "coefficient of restitution",
+            Self::BallMass => "ball mass",
+            Self::BallRadius => "ball radius",
+            Self::ClubSpeed => "club speed",
+            Self::AttackAngle => "attack angle",
+            Self::ClubPath => "club path",
+            Self::FaceAngle => "face angle",
+            Self::DynamicLoft => "dynamic loft",
+            Self::Lie => "lie",
+            Self::ClubSpin => "club spin",
+            Self::ClubVelocity => "club velocity",
+            Self::ClubOrientation => "club orientation",
+            Self::ImpactHeight => "impact height",
+            Self::ImpactToe => "impact toe offset",
+            Self::BallVelocity => "ball velocity",
+            Self::BallSpin => "ball spin",
+            Self::BallSpeed => "ball speed",
+            Self::LaunchAngle => "launch angle",
+            Self::LaunchDirection => "launch direction",
+            Self::Backspin => "backspin",
+            Self::Sidespin => "sidespin",
+            Self::LaunchPosition => "launch position",
+            Self::AirDensity => "air density",
+            Self::Temperature => "temperature",
+            Self::Humidity => "relative humidity",
+            Self::Pressure => "pressure",
+            Self::Altitude => "altitude",
+            Self::Wind => "wind",
+            Self::WindReferenceHeight => "wind reference height",
+            Self::WindExponent => "wind exponent",
+            Self::LandingHeight => "landing height",
+            Self::TimeLimit => "time limit",
+            Self::Gravity => "gravity",
+            Self::RecordInterval => "record interval",
+            Self::Step => "step size",
+            Self::Tolerance => "tolerance",
+        }
+    }
+}
+
+impl fmt::Display for Field {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl fmt::Display for Reason {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            Self::NotFinite => "is not a finite number",
+            Self::NotPositive => "must be positive",
+            Self::Negative => "must not be negative",
+            Self::OutOfRange => "is out of range",
+            Self::NotSymmetric => "is not symmetric",
+            Self::NotPositiveDefinite => "is not positive definite",
+            Self::NotRotation => "is not a proper rotation",
+        })
+    }
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::InvalidInput { field, reason } => write!(f, "invalid input: {field} {reason}"),
+            Self::OffFace => f.write_str("the impact point is off the club face"),
+            Self::NoApproach => f.write_str("the club is not approaching the ball: no impact"),
+            Self::Singular => f.write_str("the impact system is numerically singular"),
+            Self::NoLanding => f.write_str("the ball never comes down through the landing height"),
+            Self::TimeLimit => f.write_str("the flight time limit was reached before landing"),
+            Self::StepSizeUnderflow => {
+                f.write_str("the integrator cannot meet the tolerance in this precision")
+            }
+            Self::Unstable => {
+                f.write_str("the fixed-step integrator diverged: the step is too large")
+            }
+        }
+    }
+}
+
+impl core::error::Error for Error {}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn error_is_small_and_names_the_field() {
+        assert!(core::mem::size_of::<Error>() <= 4);
+        let e = Error::invalid(Field::Restitution, Reason::OutOfRange);
+        let mut buf = heapless::String::<96>::new();
+        core::fmt::write(&mut buf, format_args!("{e}")).ok();
+        assert_eq!(
+            buf.as_str(),
+            "invalid input: coefficient of restitution is out of range"
+        );
+    }
+}

@@ -1,0 +1,101 @@
+//! Rotations and small vector helpers (PHYSICS.md conventions: active rotations).
+
+use crate::real::Real;
+use nalgebra::{Matrix3, Vector3};
+
+/// `Rx(θ)`: turns +Y towards +Z.
+#[must_use]
+pub fn rot_x<T: Real>(theta: T) -> Matrix3<T> {
+    let (s, c) = theta.sin_cos();
+    let (o, z) = (T::one(), T::zero());
+    Matrix3::new(o, z, z, z, c, -s, z, s, c)
+}
+
+/// `Ry(θ)`: turns +Z towards +X.
+#[must_use]
+pub fn rot_y<T: Real>(theta: T) -> Matrix3<T> {
+    let (s, c) = theta.sin_cos();
+    let (o, z) = (T::one(), T::zero());
+    Matrix3::new(c, z, s, z, o, z, -s, z, c)
+}
+
+/// `Rz(θ)`: turns +X towards +Y.
+#[must_use]
+pub fn rot_z<T: Real>(theta: T) -> Matrix3<T> {
+    let (s, c) = theta.sin_cos();
+    let (o, z) = (T::one(), T::zero());
+    Matrix3::new(c, -s, z, s, c, z, z, z, o)
+}
+
+/// The cross-product matrix `[r]×`, so that `[r]× v = r × v`.
+#[must_use]
+pub fn cross_matrix<T: Real>(r: &Vector3<T>) -> Matrix3<T> {
+    let z = T::zero();
+    Matrix3::new(z, -r.z, r.y, r.z, z, -r.x, -r.y, r.x, z)
+}
+
+/// Two unit tangents `t1`, `t2` completing the unit vector `n` to a right-handed
+/// orthonormal frame `(n, t1, t2)`.
+///
+/// Branch-light construction of Duff et al., "Building an orthonormal basis, revisited"
+/// (JCGT 6(1), 2017), written for `n` as the first axis. Stable for every unit `n`.
+#[must_use]
+pub fn tangents<T: Real>(n: &Vector3<T>) -> (Vector3<T>, Vector3<T>) {
+    // Frisvad/Duff basis around the z component of a permuted n = (x, y, z) -> (n.y, n.z, n.x)
+    // so that (n, t1, t2) is right-handed.
+    let (x, y, z) = (n.y, n.z, n.x);
+    let sign = if z >= T::zero() { T::one() } else { -T::one() };
+    let a = -T::one() / (sign + z);
+    let b = x * y * a;
+    let u = Vector3::new(T::one() + sign * x * x * a, sign * b, -sign * x);
+    let v = Vector3::new(b, sign + y * y * a, -y);
+    // Undo the permutation: components (x, y, z) map back to (n.y, n.z, n.x).
+    let t1 = Vector3::new(u.z, u.x, u.y);
+    let t2 = Vector3::new(v.z, v.x, v.y);
+    (t1, t2)
+}
+
+/// Largest deviation of `R Rᵀ` from the identity, and `det R`: how far `r` is from a
+/// proper rotation.
+#[must_use]
+pub fn rotation_defect<T: Real>(r: &Matrix3<T>) -> (T, T) {
+    let d = r * r.transpose() - Matrix3::identity();
+    (d.amax(), r.determinant())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rotations_follow_physics_md() {
+        let q = core::f64::consts::FRAC_PI_2;
+        let x = Vector3::x();
+        let y = Vector3::y();
+        let z = Vector3::z();
+        assert!((rot_z(q) * x - y).norm() < 1e-15);
+        assert!((rot_y(q) * z - x).norm() < 1e-15);
+        assert!((rot_x(q) * y - z).norm() < 1e-15);
+    }
+
+    #[test]
+    fn tangents_are_orthonormal_and_right_handed() {
+        let dirs = [
+            Vector3::new(1.0, 0.0, 0.0),
+            Vector3::new(-1.0, 0.0, 0.0),
+            Vector3::new(0.0, 1.0, 0.0),
+            Vector3::new(0.0, 0.0, -1.0),
+            Vector3::new(0.3, -0.5, 0.8),
+            Vector3::new(-0.999, 1e-3, 1e-4),
+        ];
+        for d in dirs {
+            let n: Vector3<f64> = d.normalize();
+            let (t1, t2) = tangents(&n);
+            assert!((t1.norm() - 1.0).abs() < 1e-14);
+            assert!((t2.norm() - 1.0).abs() < 1e-14);
+            assert!(n.dot(&t1).abs() < 1e-14 && n.dot(&t2).abs() < 1e-14);
+            assert!(t1.dot(&t2).abs() < 1e-14);
+            assert!((n.cross(&t1) - t2).norm() < 1e-13, "right-handed for {d:?}");
+        }
+    }
+}
