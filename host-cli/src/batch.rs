@@ -1,0 +1,401 @@
+//! `carry batch`: many shots from a CSV file, in parallel, output in input order.
+//!
+//! Throughput design: the `csv` crate splits records into reused [`ByteRecord`]s, a chunk
+//! at a time; rayon parses, computes and formats sub-chunks in parallel, each into one
+//! byte buffer (floats by `ryu`, no per-field allocation); the buffers are written in order
+//! through a `BufWriter`. A bad row becomes an error row (naming the line and the column)
+//! and the rest continue.
+
+use crate::compute::{self, Mode, Numerics};
+use crate::error::{Failure, InputError};
+use crate::params::{Key, Params};
+use crate::report::{self, Floats};
+use crate::scene::SCENE_KEYS;
+use crate::units::Units;
+use csv::ByteRecord;
+use rayon::prelude::*;
+use std::io::{IsTerminal as _, Read, Write};
+use std::path::PathBuf;
+
+/// Records read per chunk.
+const CHUNK: usize = 16 * 1024;
+/// Records per parallel work item.
+const PIECE: usize = 256;
+/// Input size above which a progress bar is shown (bytes), when stderr is a terminal.
+const PROGRESS_BYTES: u64 = 2 * 1024 * 1024;
+
+/// A batch run.
+#[derive(Debug, Clone)]
+pub struct Job {
+    /// What to compute.
+    pub mode: Mode,
+    /// Values for columns the file does not have (command-line options and defaults).
+    pub base: Params,
+    /// Numerics.
+    pub numerics: Numerics,
+    /// Units of the input values.
+    pub units: Units,
+    /// JSON lines instead of CSV.
+    pub json: bool,
+    /// Input file, `-` for stdin.
+    pub input: PathBuf,
+    /// Worker threads.
+    pub threads: Option<usize>,
+    /// Show a progress bar if large and on a terminal.
+    pub progress: bool,
+}
+
+/// Whether `key` is an input of `mode`.
+#[must_use]
+pub fn applies(mode: Mode, key: Key) -> bool {
+    use Key::*;
+    match key {
+        BallMass | BallRadius => true,
+        ClubSpeed | AttackAngle | ClubPath | FaceAngle | DynamicLoft | Lie | ClubSpin
+        | ClubSpinX | ClubSpinY | ClubSpinZ | ImpactHeight | ImpactToe | Cor | Club | ClubMass
+        | ClubInertia | Loft | Bulge | Roll | FaceDepthRadius | CgToFace | CgToFaceX
+        | CgToFaceY | CgToFaceZ => mode != Mode::Flight,
+        BallSpeed | LaunchAngle | LaunchDirection | Backspin | Sidespin | Spin | SpinAxis => {
+            mode == Mode::Flight
+        }
+        k => SCENE_KEYS.contains(&k) && mode != Mode::Impact,
+    }
+}
+
+/// The meaning of each input column.
+#[derive(Debug, Clone)]
+pub struct Columns {
+    keys: Vec<(usize, Key)>,
+    /// Index of the `label` column, if any.
+    pub label: Option<usize>,
+    width: usize,
+}
+
+impl Columns {
+    /// Maps a header to keys.
+    ///
+    /// # Errors
+    /// On `--input` for an unknown, duplicate or inapplicable column.
+    pub fn from_header(header: &ByteRecord, mode: Mode) -> Result<Self, InputError> {
+        let mut keys = Vec::new();
+        let mut label = None;
+        for (i, raw) in header.iter().enumerate() {
+            let name = String::from_utf8_lossy(raw);
+            let name = name.trim().trim_start_matches('\u{feff}');
+            if name == "label" {
+                label = Some(i);
+                continue;
+            }
+            let key = Key::find(name).ok_or_else(|| {
+                InputError::new("input", format!("line 1: unknown column '{name}' (columns are option names in snake_case, e.g. club_speed)"))
+            })?;
+            if !applies(mode, key) {
+                return Err(InputError::new(
+                    "input",
+                    format!("line 1: column '{name}' is not an input of this command"),
+                ));
+            }
+            if keys.iter().any(|(_, k)| *k == key) {
+                return Err(InputError::new(
+                    "input",
+                    format!("line 1: column '{name}' appears twice"),
+                ));
+            }
+            keys.push((i, key));
+        }
+        Ok(Self {
+            keys,
+            label,
+            width: header.len(),
+        })
+    }
+
+    /// The parameters of one row: `base` with the row's non-empty fields.
+    ///
+    /// # Errors
+    /// An [`InputError`] naming the column.
+    pub fn apply(
+        &self,
+        rec: &ByteRecord,
+        base: &Params,
+        units: Units,
+    ) -> Result<Params, InputError> {
+        if rec.len() != self.width {
+            return Err(InputError::new(
+                "input",
+                format!(
+                    "expected {} fields as in the header, found {}",
+                    self.width,
+                    rec.len()
+                ),
+            ));
+        }
+        let mut p = *base;
+        for &(i, key) in &self.keys {
+            let raw = rec.get(i).unwrap_or_default();
+            let text = std::str::from_utf8(raw)
+                .map_err(|_| InputError::new(key.name(), "is not UTF-8 text"))?;
+            if text.trim().is_empty() {
+                continue;
+            }
+            key.set(&mut p, units, key.parse(text)?);
+        }
+        Ok(p)
+    }
+}
+
+fn line_of(rec: &ByteRecord) -> u64 {
+    rec.position().map_or(0, csv::Position::line)
+}
+
+fn put_csv_text(out: &mut Vec<u8>, text: &[u8]) {
+    if text
+        .iter()
+        .any(|b| matches!(b, b',' | b'"' | b'\n' | b'\r'))
+    {
+        out.push(b'"');
+        for &b in text {
+            if b == b'"' {
+                out.push(b'"');
+            }
+            out.push(b);
+        }
+        out.push(b'"');
+    } else {
+        out.extend_from_slice(text);
+    }
+}
+
+fn put_u64(out: &mut Vec<u8>, n: u64) {
+    let _ = write!(out, "{n}");
+}
+
+/// Formats one output row into `out`; true for an error row.
+fn process(
+    job: &Job,
+    cols: &Columns,
+    rec: &ByteRecord,
+    floats: &mut Floats,
+    out: &mut Vec<u8>,
+) -> bool {
+    let line = line_of(rec);
+    let label = cols.label.and_then(|i| rec.get(i));
+    let result = cols
+        .apply(rec, &job.base, job.units)
+        .and_then(|p| compute::run(job.mode, &p, &job.numerics));
+    let failed = result.is_err();
+    if job.json {
+        out.extend_from_slice(b"{\"line\":");
+        put_u64(out, line);
+        if let Some(l) = label {
+            out.extend_from_slice(b",\"label\":");
+            let _ = serde_json::to_writer(&mut *out, &String::from_utf8_lossy(l));
+        }
+        match result {
+            Ok(r) => {
+                let start = out.len();
+                if serde_json::to_writer(&mut *out, &r).is_ok() && out.get(start) == Some(&b'{') {
+                    out[start] = b',';
+                }
+            }
+            Err(e) => {
+                out.extend_from_slice(b",\"error\":");
+                let _ =
+                    serde_json::to_writer(&mut *out, &format!("line {line}: {}", e.as_column()));
+                out.push(b'}');
+            }
+        }
+        out.push(b'\n');
+    } else {
+        put_u64(out, line);
+        if cols.label.is_some() {
+            out.push(b',');
+            put_csv_text(out, label.unwrap_or_default());
+        }
+        match result {
+            Ok(r) => {
+                report::write_csv_fields(out, floats, job.mode, &r);
+                out.extend_from_slice(b",\n");
+            }
+            Err(e) => {
+                report::write_csv_empty(out, job.mode);
+                out.push(b',');
+                put_csv_text(out, format!("line {line}: {}", e.as_column()).as_bytes());
+                out.push(b'\n');
+            }
+        }
+    }
+    failed
+}
+
+fn open(input: &PathBuf) -> Result<(Box<dyn Read>, Option<u64>), InputError> {
+    if input.as_os_str() == "-" {
+        return Ok((Box::new(std::io::stdin().lock()), None));
+    }
+    let f = std::fs::File::open(input)
+        .map_err(|e| InputError::new("input", format!("cannot read {}: {e}", input.display())))?;
+    let len = f.metadata().ok().map(|m| m.len());
+    Ok((Box::new(f), len))
+}
+
+/// An opened CSV input: the reader, its column map and the file size (if known).
+pub type Opened = (csv::Reader<Box<dyn Read>>, Columns, Option<u64>);
+
+/// A CSV reader over `input` and its column map.
+///
+/// # Errors
+/// An unreadable file or a bad header.
+pub fn reader(input: &PathBuf, mode: Mode) -> Result<Opened, InputError> {
+    let (file, len) = open(input)?;
+    let mut rdr = csv::ReaderBuilder::new()
+        .has_headers(true)
+        .flexible(true)
+        .trim(csv::Trim::All)
+        .comment(Some(b'#'))
+        .buffer_capacity(1 << 20)
+        .from_reader(file);
+    let header = rdr
+        .byte_headers()
+        .map_err(|e| {
+            InputError::new(
+                "input",
+                format!("{}: cannot read the header: {e}", input.display()),
+            )
+        })?
+        .clone();
+    if header.is_empty() || (header.len() == 1 && header.get(0).is_some_and(<[u8]>::is_empty)) {
+        return Err(InputError::new(
+            "input",
+            format!("{}: no header line", input.display()),
+        ));
+    }
+    let cols = Columns::from_header(&header, mode)?;
+    Ok((rdr, cols, len))
+}
+
+/// Runs a batch.
+///
+/// # Errors
+/// A bad file or header (status 2), or failing to write the output (status 1).
+pub fn run(job: &Job) -> Result<(), Failure> {
+    match job.threads {
+        Some(n) => {
+            let pool = rayon::ThreadPoolBuilder::new()
+                .num_threads(n)
+                .build()
+                .map_err(|e| InputError::new("threads", e.to_string()))?;
+            pool.install(|| run_in_pool(job))
+        }
+        None => run_in_pool(job),
+    }
+}
+
+fn run_in_pool(job: &Job) -> Result<(), Failure> {
+    let (mut rdr, cols, len) = reader(&job.input, job.mode)?;
+    let progress = match len {
+        Some(n) if job.progress && n >= PROGRESS_BYTES && std::io::stderr().is_terminal() => {
+            let bar = indicatif::ProgressBar::new(n);
+            bar.set_style(
+                indicatif::ProgressStyle::with_template(
+                    "{bar:40} {bytes}/{total_bytes} {bytes_per_sec} eta {eta}",
+                )
+                .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+            );
+            Some(bar)
+        }
+        _ => None,
+    };
+    let stdout = std::io::stdout();
+    let mut out = std::io::BufWriter::with_capacity(1 << 20, stdout.lock());
+    if !job.json {
+        let mut header = Vec::new();
+        let prefix: &[&str] = if cols.label.is_some() {
+            &["line", "label"]
+        } else {
+            &["line"]
+        };
+        report::write_csv_header(&mut header, prefix, job.mode, &["error"]);
+        out.write_all(&header)?;
+    }
+    let mut records: Vec<ByteRecord> = vec![ByteRecord::new(); CHUNK];
+    let mut buffers: Vec<Vec<u8>> = vec![Vec::new(); CHUNK.div_ceil(PIECE)];
+    let mut errors: u64 = 0;
+    let mut rows: u64 = 0;
+    loop {
+        let mut n = 0;
+        let mut read_error = None;
+        while n < CHUNK {
+            match rdr.read_byte_record(&mut records[n]) {
+                Ok(true) => n += 1,
+                Ok(false) => break,
+                Err(e) => {
+                    // A malformed record (e.g. invalid quoting): report it as an error row.
+                    read_error = Some(e);
+                    break;
+                }
+            }
+        }
+        // Each piece formats into its own reused buffer; written in order afterwards.
+        let errors_in_chunk: u64 = records[..n]
+            .par_chunks(PIECE)
+            .zip(buffers.par_iter_mut())
+            .map(|(piece, buf)| {
+                buf.clear();
+                let mut floats = Floats::default();
+                let mut failed = 0;
+                for rec in piece {
+                    failed += u64::from(process(job, &cols, rec, &mut floats, buf));
+                }
+                failed
+            })
+            .sum();
+        errors += errors_in_chunk;
+        for buf in &buffers[..n.div_ceil(PIECE)] {
+            out.write_all(buf)?;
+        }
+        rows += n as u64;
+        if let Some(bar) = &progress {
+            bar.set_position(rdr.position().byte());
+        }
+        if let Some(e) = read_error {
+            let line = e.position().map_or(0, csv::Position::line);
+            errors += 1;
+            rows += 1;
+            let msg = format!("line {line}: input: {e}");
+            let mut buf = Vec::new();
+            if job.json {
+                let _ = write!(buf, "{{\"line\":{line},\"error\":");
+                let _ = serde_json::to_writer(&mut buf, &msg);
+                buf.extend_from_slice(b"}\n");
+            } else {
+                put_u64(&mut buf, line);
+                if cols.label.is_some() {
+                    buf.push(b',');
+                }
+                report::write_csv_empty(&mut buf, job.mode);
+                buf.push(b',');
+                put_csv_text(&mut buf, msg.as_bytes());
+                buf.push(b'\n');
+            }
+            out.write_all(&buf)?;
+            if matches!(e.kind(), csv::ErrorKind::Io(_)) {
+                break;
+            }
+            continue;
+        }
+        if n < CHUNK {
+            break;
+        }
+    }
+    out.flush()?;
+    if let Some(bar) = progress {
+        bar.finish_and_clear();
+    }
+    if errors > 0 {
+        let _ = writeln!(
+            std::io::stderr(),
+            "carry: {errors} of {rows} rows had errors (see their error field)"
+        );
+    }
+    Ok(())
+}

@@ -1,0 +1,641 @@
+//! The command-line grammar (clap derive). Option values are parsed here (finite numbers,
+//! vectors, presets) and applied to [`Params`] in the user's units by [`Key::set`].
+
+use crate::compute::{IntegratorChoice, Numerics, Precision, SolverChoice};
+use crate::error::InputError;
+use crate::params::{
+    Key, Params, Value, parse_finite, parse_preset, parse_radius, parse_tensor, parse_vec3,
+};
+use crate::units::Units;
+use carry_core::Preset;
+use clap::{Args, Parser, Subcommand};
+use std::path::PathBuf;
+
+const AFTER_HELP: &str = "\
+Units: SI by default (m/s, m, °C). With --units imperial, speeds are in mph, carry and \
+side in yards, heights (apex, landing height, altitude, wind reference height) in feet, \
+impact location in inches and temperature in °F. Angles are always degrees, launch spins \
+rpm, club spin rad/s, club and ball parameters kg, kg·m² and m, pressure Pa. JSON and CSV \
+output are always SI.
+
+Frames: X downrange, Y up, Z right of the target line (seen from behind the ball). \
+Positive: attack angle up, club path and face angle right (in-to-out, open), lie toe up, \
+launch direction right, sidespin and spin axis curving right (fade/slice).
+
+Bad input prints one line naming the option and exits with status 2.";
+
+/// carry: golf impact and ball flight from the command line.
+///
+/// One command per question: `impact` (club delivery → launch), `flight` (launch → flight),
+/// `shot` (both), `batch` (many shots from CSV), `plot` (trajectories to SVG), `clubs`
+/// (the presets). Run `carry shot` for a driver shot with the built-in defaults.
+#[derive(Debug, Parser)]
+#[command(name = "carry", version, propagate_version = true, after_help = AFTER_HELP, max_term_width = 100)]
+pub struct Cli {
+    /// What to compute.
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+/// The subcommands.
+#[derive(Debug, Subcommand)]
+pub enum Command {
+    /// Club delivery → ball launch (ball speed, launch angle and direction, spins, smash).
+    #[command(after_help = AFTER_HELP)]
+    Impact(ImpactCmd),
+    /// Launch (as a launch monitor reports it) → flight (carry, side, apex, landing).
+    #[command(after_help = AFTER_HELP)]
+    Flight(FlightCmd),
+    /// Club delivery → impact → flight. With no options: a 45 m/s driver shot.
+    #[command(after_help = AFTER_HELP)]
+    Shot(ShotCmd),
+    /// Many shots from a CSV file: one output row (CSV, or JSON lines with --json) per input row.
+    #[command(subcommand)]
+    Batch(BatchCmd),
+    /// Side and top views of one or more trajectories, as SVG.
+    #[command(subcommand)]
+    Plot(PlotCmd),
+    /// The club presets and their parameters.
+    Clubs(ClubsCmd),
+    /// Benchmarks and studies.
+    #[command(subcommand)]
+    Bench(BenchCmd),
+}
+
+fn finite(s: &str) -> Result<f64, String> {
+    parse_finite(s)
+}
+fn radius(s: &str) -> Result<f64, String> {
+    parse_radius(s)
+}
+fn vec3(s: &str) -> Result<[f64; 3], String> {
+    parse_vec3(s)
+}
+fn tensor(s: &str) -> Result<[f64; 9], String> {
+    parse_tensor(s)
+}
+fn preset(s: &str) -> Result<&'static Preset, String> {
+    parse_preset(s)
+}
+
+/// Club delivery options.
+#[derive(Debug, Clone, Args)]
+#[command(next_help_heading = "Delivery")]
+pub struct DeliveryArgs {
+    /// Club head speed [m/s | mph] (default 45 m/s).
+    #[arg(long, value_name = "SPEED", value_parser = finite, allow_hyphen_values = true)]
+    pub club_speed: Option<f64>,
+    /// Attack angle [deg, + up] (default 0).
+    #[arg(long, value_name = "DEG", value_parser = finite, allow_hyphen_values = true)]
+    pub attack_angle: Option<f64>,
+    /// Club path [deg, + right: in-to-out] (default 0).
+    #[arg(long, value_name = "DEG", value_parser = finite, allow_hyphen_values = true)]
+    pub club_path: Option<f64>,
+    /// Face angle [deg, + open: pointing right] (default 0).
+    #[arg(long, value_name = "DEG", value_parser = finite, allow_hyphen_values = true)]
+    pub face_angle: Option<f64>,
+    /// Dynamic loft [deg] (default: the club's static loft).
+    #[arg(long, value_name = "DEG", value_parser = finite, allow_hyphen_values = true)]
+    pub dynamic_loft: Option<f64>,
+    /// Lie / face tilt [deg, + toe up] (default 0).
+    #[arg(long, value_name = "DEG", value_parser = finite, allow_hyphen_values = true)]
+    pub lie: Option<f64>,
+    /// Club angular velocity before impact [rad/s, G] (default 0,0,0).
+    #[arg(long, value_name = "X,Y,Z", value_parser = vec3, allow_hyphen_values = true)]
+    pub club_spin: Option<[f64; 3]>,
+    /// Impact point up the face from its centre [m | in] (default 0).
+    #[arg(long, value_name = "LEN", value_parser = finite, allow_hyphen_values = true)]
+    pub impact_height: Option<f64>,
+    /// Impact point toward the toe from the face centre [m | in] (default 0; − = heel).
+    #[arg(long, value_name = "LEN", value_parser = finite, allow_hyphen_values = true)]
+    pub impact_toe: Option<f64>,
+    /// Coefficient of restitution, 0..1 (default: the club's, 0.83 for the driver).
+    #[arg(long, value_name = "E", value_parser = finite, allow_hyphen_values = true)]
+    pub cor: Option<f64>,
+}
+
+/// Club head and ball options.
+#[derive(Debug, Clone, Args)]
+#[command(next_help_heading = "Club and ball")]
+pub struct ClubArgs {
+    /// Club preset (driver, 3wood, 7iron, pw, lw58; see `carry clubs`).
+    #[arg(long, value_name = "PRESET", value_parser = preset)]
+    pub club: Option<&'static Preset>,
+    /// Club head mass [kg].
+    #[arg(long, value_name = "KG", value_parser = finite, allow_hyphen_values = true)]
+    pub club_mass: Option<f64>,
+    /// Club head inertia about its CoM [kg·m²]: Ixx,Iyy,Izz or all 9 components row by row.
+    #[arg(long, value_name = "I", value_parser = tensor, allow_hyphen_values = true)]
+    pub club_inertia: Option<[f64; 9]>,
+    /// Static loft [deg].
+    #[arg(long, value_name = "DEG", value_parser = finite, allow_hyphen_values = true)]
+    pub loft: Option<f64>,
+    /// Bulge radius, curvature across the face [m]; `flat` or `inf` for a flat face.
+    #[arg(long, value_name = "M", value_parser = radius, allow_hyphen_values = true)]
+    pub bulge: Option<f64>,
+    /// Roll radius, curvature up the face [m]; `flat` or `inf` for a flat face.
+    #[arg(long, value_name = "M", value_parser = radius, allow_hyphen_values = true)]
+    pub roll: Option<f64>,
+    /// Face ellipsoid depth radius a [m] (default: the bulge radius).
+    #[arg(long, value_name = "M", value_parser = radius, allow_hyphen_values = true)]
+    pub face_depth_radius: Option<f64>,
+    /// Club CoM → face centre, in the face frame [m].
+    #[arg(long, value_name = "X,Y,Z", value_parser = vec3, allow_hyphen_values = true)]
+    pub cg_to_face: Option<[f64; 3]>,
+    /// Ball mass [kg] (default 0.04593).
+    #[arg(long, value_name = "KG", value_parser = finite, allow_hyphen_values = true)]
+    pub ball_mass: Option<f64>,
+    /// Ball radius [m] (default 0.021336).
+    #[arg(long, value_name = "M", value_parser = finite, allow_hyphen_values = true)]
+    pub ball_radius: Option<f64>,
+}
+
+/// Ball options for a flight alone.
+#[derive(Debug, Clone, Args)]
+#[command(next_help_heading = "Ball")]
+pub struct BallArgs {
+    /// Ball mass [kg] (default 0.04593).
+    #[arg(long, value_name = "KG", value_parser = finite, allow_hyphen_values = true)]
+    pub ball_mass: Option<f64>,
+    /// Ball radius [m] (default 0.021336).
+    #[arg(long, value_name = "M", value_parser = finite, allow_hyphen_values = true)]
+    pub ball_radius: Option<f64>,
+}
+
+/// Launch options (flight input).
+#[derive(Debug, Clone, Args)]
+#[command(next_help_heading = "Launch")]
+pub struct LaunchArgs {
+    /// Ball speed [m/s | mph] (default 167 mph = 74.66 m/s, the PGA Tour driver average).
+    #[arg(long, value_name = "SPEED", value_parser = finite, allow_hyphen_values = true)]
+    pub ball_speed: Option<f64>,
+    /// Launch angle [deg, + up] (default 10.9).
+    #[arg(long, value_name = "DEG", value_parser = finite, allow_hyphen_values = true)]
+    pub launch_angle: Option<f64>,
+    /// Launch direction [deg, + right] (default 0).
+    #[arg(long, value_name = "DEG", value_parser = finite, allow_hyphen_values = true)]
+    pub launch_direction: Option<f64>,
+    /// Backspin [rpm] (default 2686).
+    #[arg(long, value_name = "RPM", value_parser = finite, allow_hyphen_values = true, conflicts_with_all = ["spin", "spin_axis"])]
+    pub backspin: Option<f64>,
+    /// Sidespin [rpm, + curves right: fade/slice] (default 0).
+    #[arg(long, value_name = "RPM", value_parser = finite, allow_hyphen_values = true, conflicts_with_all = ["spin", "spin_axis"])]
+    pub sidespin: Option<f64>,
+    /// Total spin [rpm], with --spin-axis instead of --backspin/--sidespin.
+    #[arg(long, value_name = "RPM", value_parser = finite, allow_hyphen_values = true)]
+    pub spin: Option<f64>,
+    /// Spin axis tilt [deg, + right: fade/slice] (default 0).
+    #[arg(long, value_name = "DEG", value_parser = finite, allow_hyphen_values = true)]
+    pub spin_axis: Option<f64>,
+}
+
+/// Scene options.
+#[derive(Debug, Clone, Args)]
+#[command(next_help_heading = "Scene")]
+pub struct SceneArgs {
+    /// Scene file (TOML) with the options below as snake_case keys (e.g. `wind_speed = 5`,
+    /// `wind = [-3.0, 0.0, 0.0]`, `no_lift = true`), in the units of --units; options given
+    /// on the command line override it.
+    #[arg(long, value_name = "FILE.toml")]
+    pub scene: Option<PathBuf>,
+    /// Air density [kg/m³] (default 1.225). Excludes the weather options.
+    #[arg(long, value_name = "KG/M3", value_parser = finite, allow_hyphen_values = true, conflicts_with_all = ["temperature", "humidity", "pressure", "altitude"])]
+    pub air_density: Option<f64>,
+    /// Air temperature [°C | °F] (weather; default 15 °C).
+    #[arg(long, value_name = "T", value_parser = finite, allow_hyphen_values = true)]
+    pub temperature: Option<f64>,
+    /// Relative humidity [percent, 0..100] (weather; default 0).
+    #[arg(long, value_name = "PCT", value_parser = finite, allow_hyphen_values = true)]
+    pub humidity: Option<f64>,
+    /// Station pressure [Pa] (weather). Excludes --altitude.
+    #[arg(long, value_name = "PA", value_parser = finite, allow_hyphen_values = true, conflicts_with = "altitude")]
+    pub pressure: Option<f64>,
+    /// Altitude above sea level [m | ft] (weather; standard-atmosphere pressure; default 0).
+    #[arg(long, value_name = "H", value_parser = finite, allow_hyphen_values = true)]
+    pub altitude: Option<f64>,
+    /// Uniform wind velocity [m/s | mph, G: +X downrange (helping), +Z left-to-right].
+    #[arg(long, value_name = "X,Y,Z", value_parser = vec3, allow_hyphen_values = true, conflicts_with_all = ["wind_speed", "wind_direction"])]
+    pub wind: Option<[f64; 3]>,
+    /// Wind speed at the reference height [m/s | mph] (power-law profile).
+    #[arg(long, value_name = "SPEED", value_parser = finite, allow_hyphen_values = true)]
+    pub wind_speed: Option<f64>,
+    /// Direction the wind blows towards [deg from downrange towards the right]:
+    /// 0 helping, 90 left-to-right, 180 into the face.
+    #[arg(long, value_name = "DEG", value_parser = finite, allow_hyphen_values = true)]
+    pub wind_direction: Option<f64>,
+    /// Wind profile reference height [m | ft] (default 10 m); with --wind makes it a profile.
+    #[arg(long, value_name = "H", value_parser = finite, allow_hyphen_values = true)]
+    pub wind_reference_height: Option<f64>,
+    /// Wind profile exponent k in w(h) = w_ref·(h/h_ref)^k (default 1/7).
+    #[arg(long, value_name = "K", value_parser = finite, allow_hyphen_values = true)]
+    pub wind_exponent: Option<f64>,
+    /// Height of the landing area relative to the tee [m | ft] (default 0; + uphill).
+    #[arg(long, value_name = "H", value_parser = finite, allow_hyphen_values = true)]
+    pub landing_height: Option<f64>,
+    /// Give up if the ball has not landed after this long [s] (default 60).
+    #[arg(long, value_name = "S", value_parser = finite, allow_hyphen_values = true)]
+    pub time_limit: Option<f64>,
+    /// No aerodynamic drag.
+    #[arg(long)]
+    pub no_drag: bool,
+    /// No Magnus lift.
+    #[arg(long)]
+    pub no_lift: bool,
+    /// No spin decay (spin stays at its launch value).
+    #[arg(long)]
+    pub no_spin_decay: bool,
+}
+
+/// Precision option.
+#[derive(Debug, Clone, Args)]
+#[command(next_help_heading = "Numerics")]
+pub struct PrecisionArgs {
+    /// Floating-point precision of the computation.
+    #[arg(long, value_enum, default_value_t = Precision::F64)]
+    pub precision: Precision,
+}
+
+/// Impact solver option.
+#[derive(Debug, Clone, Args)]
+#[command(next_help_heading = "Numerics")]
+pub struct SolverArgs {
+    /// Impact solver: the exact 3×3 collision-matrix form or the full 15×15 system.
+    #[arg(long, value_enum, default_value_t = SolverChoice::Reduced)]
+    pub solver: SolverChoice,
+}
+
+/// Flight integrator options.
+#[derive(Debug, Clone, Args)]
+#[command(next_help_heading = "Numerics")]
+pub struct IntegratorArgs {
+    /// Flight integrator: explicit Euler, classical RK4 (fixed step) or adaptive Dormand–Prince 5(4).
+    #[arg(long, value_enum, default_value_t = IntegratorChoice::Dp45)]
+    pub integrator: IntegratorChoice,
+    /// Step [s]: the fixed step of euler/rk4 (default 0.001), the first trial step of dp45 (default 0.1).
+    #[arg(long, value_name = "S", value_parser = finite, allow_hyphen_values = true)]
+    pub step: Option<f64>,
+    /// Relative and absolute error tolerance of dp45 (default 1e-6).
+    #[arg(long, value_name = "TOL", value_parser = finite, allow_hyphen_values = true)]
+    pub tolerance: Option<f64>,
+}
+
+/// Output options.
+#[derive(Debug, Clone, Args)]
+#[command(next_help_heading = "Output")]
+pub struct OutputArgs {
+    /// Input and display units (JSON and CSV stay SI).
+    #[arg(long, value_enum, default_value_t = Units::Si)]
+    pub units: Units,
+    /// Print JSON (SI; the stable contract, see the README).
+    #[arg(long, conflicts_with = "csv")]
+    pub json: bool,
+    /// Print CSV: a header and one row (SI; the JSON key names, vectors as _x, _y, _z).
+    #[arg(long)]
+    pub csv: bool,
+}
+
+/// `carry impact`.
+#[derive(Debug, Clone, Args)]
+pub struct ImpactCmd {
+    #[command(flatten)]
+    pub delivery: DeliveryArgs,
+    #[command(flatten)]
+    pub club: ClubArgs,
+    #[command(flatten)]
+    pub precision: PrecisionArgs,
+    #[command(flatten)]
+    pub solver: SolverArgs,
+    #[command(flatten)]
+    pub output: OutputArgs,
+}
+
+/// `carry flight`.
+#[derive(Debug, Clone, Args)]
+pub struct FlightCmd {
+    #[command(flatten)]
+    pub launch: LaunchArgs,
+    #[command(flatten)]
+    pub ball: BallArgs,
+    #[command(flatten)]
+    pub scene: SceneArgs,
+    #[command(flatten)]
+    pub precision: PrecisionArgs,
+    #[command(flatten)]
+    pub integrator: IntegratorArgs,
+    #[command(flatten)]
+    pub output: OutputArgs,
+}
+
+/// `carry shot`.
+#[derive(Debug, Clone, Args)]
+pub struct ShotCmd {
+    #[command(flatten)]
+    pub delivery: DeliveryArgs,
+    #[command(flatten)]
+    pub club: ClubArgs,
+    #[command(flatten)]
+    pub scene: SceneArgs,
+    #[command(flatten)]
+    pub precision: PrecisionArgs,
+    #[command(flatten)]
+    pub solver: SolverArgs,
+    #[command(flatten)]
+    pub integrator: IntegratorArgs,
+    #[command(flatten)]
+    pub output: OutputArgs,
+}
+
+/// Batch input options.
+#[derive(Debug, Clone, Args)]
+#[command(next_help_heading = "Batch")]
+pub struct BatchArgs {
+    /// Input CSV (`-` for standard input). Header: option names in snake_case (club_speed,
+    /// attack_angle, impact_toe, …; vectors as one quoted "x,y,z" field or _x, _y, _z
+    /// columns; `club` takes a preset name). Missing columns take the command-line values
+    /// or the defaults. Values are in the units of --units.
+    #[arg(long, short, value_name = "FILE.csv")]
+    pub input: PathBuf,
+    /// Worker threads (default: all cores).
+    #[arg(long, value_name = "N")]
+    pub threads: Option<usize>,
+    /// Never show a progress bar.
+    #[arg(long)]
+    pub no_progress: bool,
+}
+
+/// `carry batch`.
+#[derive(Debug, Clone, Subcommand)]
+#[allow(clippy::large_enum_variant)] // parsed once
+pub enum BatchCmd {
+    /// Many impacts: delivery columns → launch columns.
+    #[command(after_help = AFTER_HELP)]
+    Impact {
+        #[command(flatten)]
+        batch: BatchArgs,
+        #[command(flatten)]
+        cmd: ImpactCmd,
+    },
+    /// Many flights: launch columns → flight columns.
+    #[command(after_help = AFTER_HELP)]
+    Flight {
+        #[command(flatten)]
+        batch: BatchArgs,
+        #[command(flatten)]
+        cmd: FlightCmd,
+    },
+    /// Many shots: delivery columns → launch and flight columns.
+    #[command(after_help = AFTER_HELP)]
+    Shot {
+        #[command(flatten)]
+        batch: BatchArgs,
+        #[command(flatten)]
+        cmd: ShotCmd,
+    },
+}
+
+/// Plot options.
+#[derive(Debug, Clone, Args)]
+#[command(next_help_heading = "Plot")]
+pub struct PlotArgs {
+    /// The SVG file to write.
+    #[arg(long, short, value_name = "FILE.svg")]
+    pub output: PathBuf,
+    /// One trajectory per value of an option: NAME=V1,V2,… (snake_case or kebab-case name,
+    /// values in the units of --units), e.g. `--vary impact_toe=-0.02,0,0.02`.
+    #[arg(long, value_name = "NAME=VALUES", allow_hyphen_values = true)]
+    pub vary: Option<String>,
+    /// One trajectory per row of a CSV file (as `carry batch`); a `label` column names the curves.
+    #[arg(long, short, value_name = "FILE.csv", conflicts_with = "vary")]
+    pub input: Option<PathBuf>,
+    /// Plot title.
+    #[arg(long)]
+    pub title: Option<String>,
+}
+
+/// `carry plot`.
+#[derive(Debug, Clone, Subcommand)]
+#[allow(clippy::large_enum_variant)] // parsed once
+pub enum PlotCmd {
+    /// Plot flights from launches.
+    #[command(after_help = AFTER_HELP)]
+    Flight {
+        #[command(flatten)]
+        plot: PlotArgs,
+        #[command(flatten)]
+        cmd: FlightCmd,
+    },
+    /// Plot shots from deliveries (e.g. the same delivery at several impact locations).
+    #[command(after_help = AFTER_HELP)]
+    Shot {
+        #[command(flatten)]
+        plot: PlotArgs,
+        #[command(flatten)]
+        cmd: ShotCmd,
+    },
+}
+
+/// `carry clubs`.
+#[derive(Debug, Clone, Args)]
+pub struct ClubsCmd {
+    /// Print JSON.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// `carry bench`.
+#[derive(Debug, Clone, Subcommand)]
+pub enum BenchCmd {
+    /// Accuracy study: integrators and precisions against the reference.
+    Accuracy {
+        /// Print JSON.
+        #[arg(long)]
+        json: bool,
+        /// Also write an SVG chart.
+        #[arg(long, value_name = "FILE.svg")]
+        svg: Option<PathBuf>,
+        /// A quick, smaller study.
+        #[arg(long)]
+        quick: bool,
+    },
+}
+
+// ---------------------------------------------------------------- applying options
+
+fn put(p: &mut Params, units: Units, key: Key, v: Option<f64>) {
+    if let Some(x) = v {
+        key.set(p, units, Value::Number(x));
+    }
+}
+
+fn put_vec(p: &mut Params, units: Units, key: Key, v: Option<[f64; 3]>) {
+    if let Some(x) = v {
+        key.set(p, units, Value::Vector(x));
+    }
+}
+
+impl DeliveryArgs {
+    /// Applies the given options.
+    pub fn apply(&self, p: &mut Params, u: Units) {
+        put(p, u, Key::ClubSpeed, self.club_speed);
+        put(p, u, Key::AttackAngle, self.attack_angle);
+        put(p, u, Key::ClubPath, self.club_path);
+        put(p, u, Key::FaceAngle, self.face_angle);
+        put(p, u, Key::DynamicLoft, self.dynamic_loft);
+        put(p, u, Key::Lie, self.lie);
+        put_vec(p, u, Key::ClubSpin, self.club_spin);
+        put(p, u, Key::ImpactHeight, self.impact_height);
+        put(p, u, Key::ImpactToe, self.impact_toe);
+        put(p, u, Key::Cor, self.cor);
+    }
+}
+
+impl ClubArgs {
+    /// Applies the given options (the preset first, then the overrides).
+    pub fn apply(&self, p: &mut Params, u: Units) {
+        if let Some(preset) = self.club {
+            Key::Club.set(p, u, Value::Preset(preset));
+        }
+        put(p, u, Key::ClubMass, self.club_mass);
+        if let Some(t) = self.club_inertia {
+            Key::ClubInertia.set(p, u, Value::Tensor(t));
+        }
+        put(p, u, Key::Loft, self.loft);
+        put(p, u, Key::Bulge, self.bulge);
+        put(p, u, Key::Roll, self.roll);
+        put(p, u, Key::FaceDepthRadius, self.face_depth_radius);
+        put_vec(p, u, Key::CgToFace, self.cg_to_face);
+        put(p, u, Key::BallMass, self.ball_mass);
+        put(p, u, Key::BallRadius, self.ball_radius);
+    }
+}
+
+impl BallArgs {
+    /// Applies the given options.
+    pub fn apply(&self, p: &mut Params, u: Units) {
+        put(p, u, Key::BallMass, self.ball_mass);
+        put(p, u, Key::BallRadius, self.ball_radius);
+    }
+}
+
+impl LaunchArgs {
+    /// Applies the given options.
+    pub fn apply(&self, p: &mut Params, u: Units) {
+        put(p, u, Key::BallSpeed, self.ball_speed);
+        put(p, u, Key::LaunchAngle, self.launch_angle);
+        put(p, u, Key::LaunchDirection, self.launch_direction);
+        put(p, u, Key::Backspin, self.backspin);
+        put(p, u, Key::Sidespin, self.sidespin);
+        put(p, u, Key::Spin, self.spin);
+        put(p, u, Key::SpinAxis, self.spin_axis);
+    }
+}
+
+impl SceneArgs {
+    /// Applies the scene file, then the given options.
+    ///
+    /// # Errors
+    /// A bad scene file.
+    pub fn apply(&self, p: &mut Params, u: Units) -> Result<(), InputError> {
+        if let Some(path) = &self.scene {
+            crate::scene::load_file(path, u, p)?;
+        }
+        put(p, u, Key::AirDensity, self.air_density);
+        put(p, u, Key::Temperature, self.temperature);
+        put(p, u, Key::Humidity, self.humidity);
+        put(p, u, Key::Pressure, self.pressure);
+        put(p, u, Key::Altitude, self.altitude);
+        put_vec(p, u, Key::Wind, self.wind);
+        put(p, u, Key::WindSpeed, self.wind_speed);
+        put(p, u, Key::WindDirection, self.wind_direction);
+        put(p, u, Key::WindReferenceHeight, self.wind_reference_height);
+        put(p, u, Key::WindExponent, self.wind_exponent);
+        put(p, u, Key::LandingHeight, self.landing_height);
+        put(p, u, Key::TimeLimit, self.time_limit);
+        for (flag, key) in [
+            (self.no_drag, Key::NoDrag),
+            (self.no_lift, Key::NoLift),
+            (self.no_spin_decay, Key::NoSpinDecay),
+        ] {
+            if flag {
+                key.set(p, u, Value::Bool(true));
+            }
+        }
+        Ok(())
+    }
+}
+
+impl ImpactCmd {
+    /// The shot parameters and numerics these options describe.
+    ///
+    /// # Errors
+    /// Invalid option combinations.
+    pub fn resolve(&self) -> Result<(Params, Numerics), InputError> {
+        let mut p = Params::default();
+        let u = self.output.units;
+        self.club.apply(&mut p, u);
+        self.delivery.apply(&mut p, u);
+        let n = Numerics {
+            precision: self.precision.precision,
+            solver: self.solver.solver,
+            ..Numerics::default()
+        };
+        Ok((p, n))
+    }
+}
+
+impl FlightCmd {
+    /// The shot parameters and numerics these options describe.
+    ///
+    /// # Errors
+    /// A bad scene file or invalid option combinations.
+    pub fn resolve(&self) -> Result<(Params, Numerics), InputError> {
+        let mut p = Params::default();
+        let u = self.output.units;
+        self.ball.apply(&mut p, u);
+        self.launch.apply(&mut p, u);
+        self.scene.apply(&mut p, u)?;
+        let n = Numerics {
+            precision: self.precision.precision,
+            integrator: self.integrator.integrator,
+            step_s: self.integrator.step,
+            tolerance: self.integrator.tolerance,
+            ..Numerics::default()
+        };
+        n.check()?;
+        Ok((p, n))
+    }
+}
+
+impl ShotCmd {
+    /// The shot parameters and numerics these options describe.
+    ///
+    /// # Errors
+    /// A bad scene file or invalid option combinations.
+    pub fn resolve(&self) -> Result<(Params, Numerics), InputError> {
+        let mut p = Params::default();
+        let u = self.output.units;
+        self.club.apply(&mut p, u);
+        self.delivery.apply(&mut p, u);
+        self.scene.apply(&mut p, u)?;
+        let n = Numerics {
+            precision: self.precision.precision,
+            solver: self.solver.solver,
+            integrator: self.integrator.integrator,
+            step_s: self.integrator.step,
+            tolerance: self.integrator.tolerance,
+        };
+        n.check()?;
+        Ok((p, n))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use clap::CommandFactory;
+
+    #[test]
+    fn grammar_is_consistent() {
+        Cli::command().debug_assert();
+    }
+}

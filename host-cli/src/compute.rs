@@ -1,0 +1,388 @@
+//! The physics runs: options ([`Params`]) → core types in precision `T` → core → a
+//! [`Report`] in `f64`. The same generic code serves `--precision f32` and `f64`.
+
+use crate::error::InputError;
+use crate::params::{ClubParams, DEFAULT_BACKSPIN_RPM, Params};
+use crate::report::{ClubAfter, FlightReport, LaunchReport, Report};
+use carry_core::flight::{Integrator, Recorder, Sample};
+use carry_core::impact::{self, Solver};
+use carry_core::real::{lit, to_f64};
+use carry_core::units::{deg, rpm, to_deg, to_rpm};
+use carry_core::{
+    Ball, BallMotion, ClubHead, ClubSpec, Delivery, FaceLocation, FlightOutcome, Launch,
+    LaunchMetrics, Real,
+};
+use clap::ValueEnum;
+use nalgebra::{Matrix3, Vector3};
+
+/// Floating-point precision of the computation.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, ValueEnum)]
+pub enum Precision {
+    /// Single precision (what a launch-monitor MCU runs).
+    F32,
+    /// Double precision.
+    #[default]
+    F64,
+}
+
+/// Impact solver.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, ValueEnum)]
+pub enum SolverChoice {
+    /// The exact 3×3 collision-matrix form.
+    #[default]
+    Reduced,
+    /// The full 15×15 system (Gaussian elimination, equilibrated partial pivoting).
+    Full,
+}
+
+/// Flight integrator.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, ValueEnum)]
+pub enum IntegratorChoice {
+    /// Explicit Euler, fixed step.
+    Euler,
+    /// Classical Runge–Kutta 4, fixed step.
+    Rk4,
+    /// Adaptive Dormand–Prince 5(4).
+    #[default]
+    Dp45,
+}
+
+/// Default fixed step for Euler and RK4 (s).
+pub const DEFAULT_FIXED_STEP_S: f64 = 1.0e-3;
+
+/// Numerical settings, global to a run.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Numerics {
+    /// f32 or f64.
+    pub precision: Precision,
+    /// Impact solver.
+    pub solver: SolverChoice,
+    /// Flight integrator.
+    pub integrator: IntegratorChoice,
+    /// Fixed step (Euler, RK4) or first trial step (DP45), s.
+    pub step_s: Option<f64>,
+    /// DP45 tolerance (relative and absolute).
+    pub tolerance: Option<f64>,
+}
+
+/// What a run computes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Mode {
+    /// Delivery → launch.
+    Impact,
+    /// Launch → flight.
+    Flight,
+    /// Delivery → launch → flight.
+    Shot,
+}
+
+impl Numerics {
+    /// Checks option combinations that do not depend on a shot.
+    ///
+    /// # Errors
+    /// `--tolerance` with a fixed-step integrator.
+    pub fn check(&self) -> Result<(), InputError> {
+        if self.tolerance.is_some() && self.integrator != IntegratorChoice::Dp45 {
+            return Err(InputError::new(
+                "tolerance",
+                "applies only to --integrator dp45",
+            ));
+        }
+        Ok(())
+    }
+
+    fn solver(&self) -> Solver {
+        match self.solver {
+            SolverChoice::Reduced => Solver::Reduced,
+            SolverChoice::Full => Solver::FULL,
+        }
+    }
+
+    fn integrator<T: Real>(&self) -> Integrator<T> {
+        match self.integrator {
+            IntegratorChoice::Euler => Integrator::Euler {
+                step_s: lit(self.step_s.unwrap_or(DEFAULT_FIXED_STEP_S)),
+            },
+            IntegratorChoice::Rk4 => Integrator::Rk4 {
+                step_s: lit(self.step_s.unwrap_or(DEFAULT_FIXED_STEP_S)),
+            },
+            IntegratorChoice::Dp45 => {
+                let mut i = match self.tolerance {
+                    Some(tol) => Integrator::dormand_prince(lit(tol)),
+                    None => Integrator::default(),
+                };
+                if let (Some(h), Integrator::DormandPrince { initial_step_s, .. }) =
+                    (self.step_s, &mut i)
+                {
+                    *initial_step_s = lit(h);
+                }
+                i
+            }
+        }
+    }
+}
+
+fn v3<T: Real>(v: [f64; 3]) -> Vector3<T> {
+    Vector3::new(lit(v[0]), lit(v[1]), lit(v[2]))
+}
+
+fn f3<T: Real>(v: &Vector3<T>) -> [f64; 3] {
+    [to_f64(v.x), to_f64(v.y), to_f64(v.z)]
+}
+
+/// The club head of `c` in precision `T`, validated.
+///
+/// # Errors
+/// The core's validation, naming the club option.
+pub fn club<T: Real>(c: &ClubParams) -> Result<ClubHead<T>, InputError> {
+    club_spec(c).validate().map_err(InputError::from)
+}
+
+/// The club parameters of `c` (preset plus overrides) in precision `T`, unvalidated.
+#[must_use]
+pub fn club_spec<T: Real>(c: &ClubParams) -> ClubSpec<T> {
+    let mut spec = c.preset.spec::<T>();
+    if let Some(m) = c.mass_kg {
+        spec.mass_kg = lit(m);
+    }
+    if let Some(i) = c.inertia_kgm2 {
+        spec.inertia_kgm2 = Matrix3::from_row_slice(&i.map(lit::<T>));
+    }
+    if let Some(a) = c.loft_deg {
+        spec.loft_rad = deg(lit(a));
+    }
+    if let Some(b) = c.bulge_m {
+        spec.bulge_radius_m = lit(b);
+    }
+    if let Some(r) = c.roll_m {
+        spec.roll_radius_m = lit(r);
+    }
+    if let Some(a) = c.face_depth_radius_m {
+        spec.face_depth_radius_m = Some(lit(a));
+    }
+    if let Some(cg) = c.cg_to_face_m {
+        spec.cg_to_face_m = v3(cg);
+    }
+    if let Some(e) = c.cor {
+        spec.restitution = lit(e);
+    }
+    spec
+}
+
+fn ball<T: Real>(p: &Params) -> Result<Ball<T>, InputError> {
+    Ball::new(lit(p.ball_mass_kg), lit(p.ball_radius_m)).map_err(InputError::from)
+}
+
+/// The impact of `p` in precision `T`.
+fn solve_impact<T: Real>(
+    p: &Params,
+    n: &Numerics,
+    ball: &Ball<T>,
+) -> Result<carry_core::ImpactOutcome<T>, InputError> {
+    let head = club::<T>(&p.club)?;
+    let d = &p.delivery;
+    let delivery = Delivery {
+        club_speed_mps: lit(d.club_speed_mps),
+        attack_angle_rad: deg(lit(d.attack_angle_deg)),
+        club_path_rad: deg(lit(d.club_path_deg)),
+        face_angle_rad: deg(lit(d.face_angle_deg)),
+        dynamic_loft_rad: d.dynamic_loft_deg.map_or(head.loft_rad(), |a| deg(lit(a))),
+        lie_rad: deg(lit(d.lie_deg)),
+        club_spin_radps: v3(d.club_spin_radps),
+        location: FaceLocation {
+            height_m: lit(d.impact_height_m),
+            toe_m: lit(d.impact_toe_m),
+        },
+    };
+    let strike = delivery.strike(&head)?;
+    impact::solve(&head, ball, &strike, n.solver()).map_err(|e| {
+        if e == carry_core::Error::NoApproach
+            && d.club_speed_mps == 0.0
+            && d.club_spin_radps == [0.0; 3]
+        {
+            InputError::new(
+                "club_speed",
+                "must be positive: a club at rest does not strike the ball",
+            )
+        } else {
+            e.into()
+        }
+    })
+}
+
+fn launch_report<T: Real>(
+    m: &LaunchMetrics<T>,
+    motion: &BallMotion<T>,
+    smash: bool,
+) -> LaunchReport {
+    LaunchReport {
+        ball_speed_mps: to_f64(m.ball_speed_mps),
+        launch_angle_deg: to_f64(to_deg(m.launch_angle_rad)),
+        launch_direction_deg: to_f64(to_deg(m.launch_direction_rad)),
+        spin_rpm: to_f64(to_rpm(m.spin_radps)),
+        backspin_rpm: to_f64(to_rpm(m.backspin_radps)),
+        sidespin_rpm: to_f64(to_rpm(m.sidespin_radps)),
+        spin_axis_deg: to_f64(to_deg(m.spin_axis_rad)),
+        smash_factor: smash.then(|| to_f64(m.smash_factor)),
+        ball_velocity_mps: f3(&motion.velocity_mps),
+        ball_spin_radps: f3(&motion.spin_radps),
+    }
+}
+
+/// The launch a flight starts from (launch-monitor terms → ball motion).
+fn launch_motion<T: Real>(p: &Params) -> Result<(BallMotion<T>, LaunchReport), InputError> {
+    let l = &p.launch;
+    let axis_form = l.spin_rpm.is_some() || l.spin_axis_deg.is_some();
+    let launch = if axis_form {
+        if l.backspin_rpm.is_some() || l.sidespin_rpm.is_some() {
+            return Err(InputError::new(
+                "spin, spin_axis",
+                "give either backspin and sidespin or spin and spin axis, not both",
+            ));
+        }
+        let spin = l.spin_rpm.unwrap_or(DEFAULT_BACKSPIN_RPM);
+        if spin < 0.0 {
+            return Err(InputError::new("spin", "must not be negative"));
+        }
+        Launch::from_spin_axis(
+            lit(l.ball_speed_mps),
+            deg(lit(l.launch_angle_deg)),
+            deg(lit(l.launch_direction_deg)),
+            rpm(lit(spin)),
+            deg(lit(l.spin_axis_deg.unwrap_or(0.0))),
+        )
+    } else {
+        Launch {
+            ball_speed_mps: lit(l.ball_speed_mps),
+            launch_angle_rad: deg(lit(l.launch_angle_deg)),
+            launch_direction_rad: deg(lit(l.launch_direction_deg)),
+            backspin_radps: rpm(lit(l.backspin_rpm.unwrap_or(DEFAULT_BACKSPIN_RPM))),
+            sidespin_radps: rpm(lit(l.sidespin_rpm.unwrap_or(0.0))),
+        }
+    };
+    let motion = launch.ball_motion()?;
+    let back = to_f64(to_rpm(launch.backspin_radps));
+    let side = to_f64(to_rpm(launch.sidespin_radps));
+    let report = LaunchReport {
+        ball_speed_mps: to_f64(launch.ball_speed_mps),
+        launch_angle_deg: to_f64(to_deg(launch.launch_angle_rad)),
+        launch_direction_deg: to_f64(to_deg(launch.launch_direction_rad)),
+        spin_rpm: to_f64(to_rpm(motion.spin_radps.norm())),
+        backspin_rpm: back,
+        sidespin_rpm: side,
+        spin_axis_deg: side.atan2(back).to_degrees(),
+        smash_factor: None,
+        ball_velocity_mps: f3(&motion.velocity_mps),
+        ball_spin_radps: f3(&motion.spin_radps),
+    };
+    Ok((motion, report))
+}
+
+fn flight_report<T: Real>(f: &FlightOutcome<T>) -> FlightReport {
+    FlightReport {
+        carry_m: to_f64(f.carry_m),
+        side_m: to_f64(f.side_m),
+        carry_x_m: to_f64(f.carry_x_m),
+        apex_m: to_f64(f.apex_m),
+        apex_time_s: to_f64(f.apex_time_s),
+        flight_time_s: to_f64(f.flight_time_s),
+        land_angle_deg: to_f64(to_deg(f.landing_angle_rad)),
+        land_speed_mps: to_f64(f.landing_speed_mps),
+        land_spin_rpm: to_f64(to_rpm(f.landing_spin_radps)),
+        landing_position_m: f3(&f.landing_position_m),
+        force_evaluations: f.stats.force_evaluations,
+        landing_velocity_mps: f3(&f.landing_velocity_mps),
+        air_density_kgm3: to_f64(f.air_density_kgm3),
+        steps: f.stats.steps,
+        rejected_steps: f.stats.rejected_steps,
+    }
+}
+
+/// Trajectory samples are recorded every this many seconds for plots.
+pub const TRACE_INTERVAL_S: f64 = 0.02;
+/// Most samples a trace keeps (80 s at the interval above).
+pub const TRACE_CAPACITY: usize = 4000;
+
+/// Runs `mode` on `p` in precision `T`; with `trace`, records the trajectory (m, G).
+///
+/// # Errors
+/// An [`InputError`] naming the option at fault.
+pub fn run_in<T: Real>(
+    mode: Mode,
+    p: &Params,
+    n: &Numerics,
+    trace: Option<&mut Vec<[f64; 3]>>,
+) -> Result<Report, InputError> {
+    let ball = ball::<T>(p)?;
+    let (motion, launch, club_after, impulse) = match mode {
+        Mode::Impact | Mode::Shot => {
+            let out = solve_impact::<T>(p, n, &ball)?;
+            let launch = launch_report(&out.launch, &out.ball, true);
+            let club_after = ClubAfter {
+                velocity_mps: f3(&out.club.velocity_mps),
+                spin_radps: f3(&out.club.spin_radps),
+            };
+            (
+                out.ball,
+                launch,
+                Some(club_after),
+                Some(f3(&out.impulse_ns)),
+            )
+        }
+        Mode::Flight => {
+            let (motion, launch) = launch_motion::<T>(p)?;
+            (motion, launch, None, None)
+        }
+    };
+    let flight = if mode == Mode::Impact {
+        None
+    } else {
+        let scene = crate::scene::build::<T>(&p.scene)?.prepare(&ball)?;
+        let integrator = n.integrator::<T>();
+        let outcome = match trace {
+            None => scene.fly(&motion, &integrator, None)?,
+            Some(points) => {
+                let mut buffer = Box::new(heapless::Vec::<Sample<T>, TRACE_CAPACITY>::new());
+                let mut recorder = Recorder::new(lit(TRACE_INTERVAL_S), &mut *buffer)?;
+                let outcome = scene.fly(&motion, &integrator, Some(&mut recorder))?;
+                points.clear();
+                points.extend(recorder.samples().iter().map(|s| f3(&s.position_m)));
+                outcome
+            }
+        };
+        Some(flight_report(&outcome))
+    };
+    Ok(Report {
+        launch,
+        club_after,
+        impulse_ns: impulse,
+        flight,
+    })
+}
+
+/// Runs `mode` on `p` in the precision `n` asks for.
+///
+/// # Errors
+/// An [`InputError`] naming the option at fault.
+pub fn run(mode: Mode, p: &Params, n: &Numerics) -> Result<Report, InputError> {
+    match n.precision {
+        Precision::F32 => run_in::<f32>(mode, p, n, None),
+        Precision::F64 => run_in::<f64>(mode, p, n, None),
+    }
+}
+
+/// As [`run`], recording the trajectory for a plot.
+///
+/// # Errors
+/// An [`InputError`] naming the option at fault.
+pub fn run_traced(
+    mode: Mode,
+    p: &Params,
+    n: &Numerics,
+    trace: &mut Vec<[f64; 3]>,
+) -> Result<Report, InputError> {
+    match n.precision {
+        Precision::F32 => run_in::<f32>(mode, p, n, Some(trace)),
+        Precision::F64 => run_in::<f64>(mode, p, n, Some(trace)),
+    }
+}

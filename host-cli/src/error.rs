@@ -1,0 +1,210 @@
+//! Errors as the user reads them: one line naming the option (or batch column) and why.
+//!
+//! Every core [`carry_core::Error`] maps to an [`InputError`]: `InvalidInput { field, .. }`
+//! names the option of that field (`Field::ClubSpeed` → `--club-speed`); the physical
+//! failures name the options that cause them (an impact off the face → `--impact-height,
+//! --impact-toe`; no landing → `--landing-height`, …).
+
+use carry_core::{Error, Field};
+use std::fmt;
+
+/// Exit status for invalid input (also clap's usage-error status).
+pub const EXIT_INPUT: u8 = 2;
+/// Exit status for an I/O failure (writing output, reading a file that exists).
+pub const EXIT_IO: u8 = 1;
+
+/// An invalid input: which option (snake_case key; several separated by `, `) and why.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct InputError {
+    /// Option name(s) in snake_case, e.g. `club_speed` or `impact_height, impact_toe`.
+    pub key: &'static str,
+    /// Why, e.g. `must not be negative`.
+    pub reason: String,
+}
+
+impl InputError {
+    /// An error for `key`.
+    pub fn new(key: &'static str, reason: impl Into<String>) -> Self {
+        Self {
+            key,
+            reason: reason.into(),
+        }
+    }
+
+    /// The options as the command line spells them: `--club-speed`, `--impact-height, --impact-toe`.
+    #[must_use]
+    pub fn options(&self) -> String {
+        self.key
+            .split(", ")
+            .map(|k| format!("--{}", k.replace('_', "-")))
+            .collect::<Vec<_>>()
+            .join(", ")
+    }
+
+    /// The batch form, naming the column(s): `club_speed: must not be negative`.
+    #[must_use]
+    pub fn as_column(&self) -> String {
+        format!("{}: {}", self.key, self.reason)
+    }
+}
+
+impl fmt::Display for InputError {
+    /// The command-line form: `--club-speed: must not be negative`.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}: {}", self.options(), self.reason)
+    }
+}
+
+impl std::error::Error for InputError {}
+
+/// The option (snake_case) a core field comes from.
+#[must_use]
+pub fn field_key(field: Field) -> &'static str {
+    match field {
+        Field::ClubMass => "club_mass",
+        Field::ClubInertia => "club_inertia",
+        Field::Loft => "loft",
+        Field::RollRadius => "roll",
+        Field::BulgeRadius => "bulge",
+        Field::FaceDepthRadius => "face_depth_radius",
+        Field::CgToFace => "cg_to_face",
+        Field::Restitution => "cor",
+        Field::BallMass => "ball_mass",
+        Field::BallRadius => "ball_radius",
+        Field::ClubSpeed => "club_speed",
+        Field::AttackAngle => "attack_angle",
+        Field::ClubPath => "club_path",
+        Field::FaceAngle => "face_angle",
+        Field::DynamicLoft => "dynamic_loft",
+        Field::Lie => "lie",
+        Field::ClubSpin => "club_spin",
+        Field::ClubVelocity => "club_speed, attack_angle, club_path",
+        Field::ClubOrientation => "face_angle, dynamic_loft, lie",
+        Field::ImpactHeight => "impact_height",
+        Field::ImpactToe => "impact_toe",
+        Field::BallVelocity | Field::BallSpeed => "ball_speed",
+        Field::BallSpin => "backspin, sidespin, spin",
+        Field::LaunchAngle => "launch_angle",
+        Field::LaunchDirection => "launch_direction",
+        Field::Backspin => "backspin",
+        Field::Sidespin => "sidespin",
+        Field::AirDensity => "air_density",
+        Field::Temperature => "temperature",
+        Field::Humidity => "humidity",
+        Field::Pressure => "pressure",
+        Field::Altitude => "altitude",
+        Field::Wind => "wind",
+        Field::WindReferenceHeight => "wind_reference_height",
+        Field::WindExponent => "wind_exponent",
+        Field::LandingHeight => "landing_height",
+        Field::TimeLimit => "time_limit",
+        Field::Step => "step",
+        Field::Tolerance => "tolerance",
+        Field::RecordInterval => "interval",
+        // LaunchPosition and Gravity are not options of the CLI (fixed tee, standard g),
+        // nor is any field added to the core later.
+        _ => "precision",
+    }
+}
+
+impl From<Error> for InputError {
+    fn from(e: Error) -> Self {
+        match e {
+            Error::InvalidInput { field, reason } => {
+                let reason = match field {
+                    Field::Humidity => format!("{reason} (0 to 100 percent)"),
+                    Field::Temperature => format!("{reason} (−100 to 100 °C)"),
+                    Field::Altitude => format!("{reason} (−5000 to 11000 m)"),
+                    Field::Restitution => format!("{reason} (0 to 1)"),
+                    Field::Pressure => {
+                        format!(
+                            "{reason} (or below the vapour pressure at this temperature and humidity)"
+                        )
+                    }
+                    _ => reason.to_string(),
+                };
+                Self::new(field_key(field), reason)
+            }
+            Error::OffFace => Self::new(
+                "impact_height, impact_toe",
+                "the impact point is off the club face",
+            ),
+            Error::NoApproach => Self::new(
+                "club_speed, club_path, attack_angle",
+                "the club is not moving towards the ball: no impact",
+            ),
+            Error::Singular => Self::new(
+                "precision",
+                "the impact system is numerically singular for these inputs in this precision",
+            ),
+            Error::NoLanding => Self::new(
+                "landing_height",
+                "the ball never comes down through the landing height",
+            ),
+            Error::TimeLimit => Self::new(
+                "time_limit",
+                "the ball had not landed when the time limit was reached",
+            ),
+            Error::StepSizeUnderflow => Self::new(
+                "tolerance",
+                "the integrator cannot meet this tolerance in this precision (loosen it or use --precision f64)",
+            ),
+            Error::Unstable => Self::new(
+                "step",
+                "the fixed-step integrator diverged: the step is too large",
+            ),
+            // A future core error: still one line, never a panic.
+            other => Self::new("precision", other.to_string()),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use carry_core::Reason;
+
+    #[test]
+    fn names_the_option() {
+        let e = InputError::from(Error::invalid(Field::ClubSpeed, Reason::Negative));
+        assert_eq!(e.to_string(), "--club-speed: must not be negative");
+        let e = InputError::from(Error::OffFace);
+        assert_eq!(
+            e.to_string(),
+            "--impact-height, --impact-toe: the impact point is off the club face"
+        );
+        assert_eq!(
+            e.as_column(),
+            "impact_height, impact_toe: the impact point is off the club face"
+        );
+    }
+}
+
+/// Why a command failed, and so its exit status.
+#[derive(Debug)]
+pub enum Failure {
+    /// Invalid input: status 2.
+    Input(InputError),
+    /// Writing the output or a file failed: status 1 (a closed pipe ends quietly).
+    Io(std::io::Error),
+    /// Anything else, already a sentence: status 1.
+    Other(String),
+}
+
+impl From<InputError> for Failure {
+    fn from(e: InputError) -> Self {
+        Self::Input(e)
+    }
+}
+
+impl From<std::io::Error> for Failure {
+    fn from(e: std::io::Error) -> Self {
+        Self::Io(e)
+    }
+}
+
+impl From<Error> for Failure {
+    fn from(e: Error) -> Self {
+        Self::Input(e.into())
+    }
+}
