@@ -169,12 +169,16 @@ impl<T: Real> ClubSpec<T> {
         let loft_rad = in_range(self.loft_rad, -T::frac_pi_2(), T::frac_pi_2(), Field::Loft)?;
         let b = positive_or_infinite(self.roll_radius_m, Field::RollRadius)?;
         let c = positive_or_infinite(self.bulge_radius_m, Field::BulgeRadius)?;
-        let a = match self.face_depth_radius_m {
-            Some(a) => positive_or_infinite(a, Field::FaceDepthRadius)?,
-            None if c.is_finite() => c,
-            None => b,
+        // The depth radius and the input it comes from (named when a/r² overflows).
+        let (a, a_field) = match self.face_depth_radius_m {
+            Some(a) => (
+                positive_or_infinite(a, Field::FaceDepthRadius)?,
+                Field::FaceDepthRadius,
+            ),
+            None if c.is_finite() => (c, Field::BulgeRadius),
+            None => (b, Field::RollRadius),
         };
-        let face = FaceShape::new(a, b, c)?;
+        let face = FaceShape::new(a, b, c, a_field)?;
         let cg_to_face_m = finite_vector(&self.cg_to_face_m, Field::CgToFace)?;
         let restitution = in_range(self.restitution, T::zero(), T::one(), Field::Restitution)?;
         finite(restitution, Field::Restitution)?;
@@ -231,7 +235,7 @@ pub struct FaceShape<T> {
 }
 
 impl<T: Real> FaceShape<T> {
-    fn new(a: T, b: T, c: T) -> Result<Self> {
+    fn new(a: T, b: T, c: T, a_field: Field) -> Result<Self> {
         let inv_sq = |r: T| {
             if r.is_finite() {
                 T::one() / (r * r)
@@ -257,14 +261,19 @@ impl<T: Real> FaceShape<T> {
             depth_over_roll_sq: ratio(b)?,
             depth_over_bulge_sq: ratio(c)?,
         };
-        // Tiny radii overflow 1/r² to ∞: reject rather than compute with it.
-        if shape.inv_roll_sq.is_finite() && shape.depth_over_roll_sq.is_finite() {
-            if shape.inv_bulge_sq.is_finite() && shape.depth_over_bulge_sq.is_finite() {
-                return Ok(shape);
-            }
+        // Tiny radii overflow 1/r² to ∞, a huge depth radius overflows a/r²: reject rather
+        // than compute with it, naming the input at fault (issue 7: a bulge radius near the
+        // precision's maximum, the default depth radius, used to be blamed on the roll).
+        if !shape.inv_roll_sq.is_finite() {
+            return Err(Error::invalid(Field::RollRadius, Reason::OutOfRange));
+        }
+        if !shape.inv_bulge_sq.is_finite() {
             return Err(Error::invalid(Field::BulgeRadius, Reason::OutOfRange));
         }
-        Err(Error::invalid(Field::RollRadius, Reason::OutOfRange))
+        if !(shape.depth_over_roll_sq.is_finite() && shape.depth_over_bulge_sq.is_finite()) {
+            return Err(Error::invalid(a_field, Reason::OutOfRange));
+        }
+        Ok(shape)
     }
 }
 

@@ -41,15 +41,23 @@ pub fn solve_gauss<T: Real, const N: usize>(
     let mut x = *b;
     if pivoting == Pivoting::Equilibrated {
         for i in 0..N {
-            let m = a.row(i).amax();
+            let mut m = T::zero();
+            for j in 0..N {
+                let v = at(a, i, j).abs();
+                if v > m {
+                    m = v;
+                }
+            }
             if !(m > T::zero()) {
                 return Err(Error::Singular);
             }
             let inv = T::one() / m;
-            a.row_mut(i).scale_mut(inv);
-            if let Some(xi) = x.get_mut(i) {
-                *xi *= inv;
+            for j in 0..N {
+                let v = at(a, i, j) * inv;
+                set(a, i, j, v);
             }
+            let xi = at_v(&x, i) * inv;
+            set_v(&mut x, i, xi);
         }
     }
     let tiny = lit::<T>(N as f64) * T::default_epsilon() * a.amax();

@@ -32,19 +32,14 @@ use crate::real::Real;
 use nalgebra::Vector3;
 
 /// Which formulation solves the impact.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub enum Solver {
     /// The exact 3×3 collision-matrix form (fast; the default).
+    #[default]
     Reduced,
     /// The full 15×15 system by Gaussian elimination with the given pivoting.
     Full(Pivoting),
-}
-
-impl Default for Solver {
-    fn default() -> Self {
-        Self::Reduced
-    }
 }
 
 impl Solver {
@@ -180,7 +175,17 @@ pub fn solve<T: Real>(
     if !(finite(&post.club_velocity_mps)
         && finite(&post.club_spin_radps)
         && finite(&post.ball_velocity_mps)
-        && finite(&post.ball_spin_radps))
+        && finite(&post.ball_spin_radps)
+        && finite(&post.impulse_ns))
+    {
+        return Err(Error::Singular);
+    }
+    let launch = LaunchMetrics::from_motion(&ball_after, strike.club_speed_mps());
+    // Finite components can still overflow a norm (inputs near the precision's largest
+    // value; found by fuzzing, issue 7): out of range for the precision, never ±∞ out.
+    if !(launch.ball_speed_mps.is_finite()
+        && launch.spin_radps.is_finite()
+        && launch.smash_factor.is_finite())
     {
         return Err(Error::Singular);
     }
@@ -193,6 +198,6 @@ pub fn solve<T: Real>(
         },
         impulse_ns: post.impulse_ns,
         contact: problem.contact,
-        launch: LaunchMetrics::from_motion(&ball_after, strike.club_speed_mps()),
+        launch,
     })
 }

@@ -1,0 +1,203 @@
+//! The aerodynamic model of Quintavalla (2002), "A generally applicable model for the
+//! aerodynamic behavior of golf balls", Science and Golf IV, 341–348 (PHYSICS.md):
+//!
+//! ```text
+//! v_r = v − w,  V = |v_r|,  Sp = |ω|·R / V
+//! C_D = 0.171 + 0.62 Sp     C_L = 0.083 + 0.885 Sp     C_M = 0.0125 Sp
+//! q   = ½ ρ π R² V²
+//! drag   = q C_D (−v_r/V)          lift = q C_L (ω̂ × v_r/V)       (0 when ω = 0)
+//! torque = q C_M D (−ω̂)            dω/dt = torque / I_b            (the axis does not turn)
+//! ```
+//!
+//! Written without dividing by `V` or `|ω|`, so every term is finite as `V → 0` (a ball
+//! moving with the wind) and at `ω = 0`; with `A = ½ρπR²/m_b`, `s = |ω|`:
+//!
+//! ```text
+//! a_drag = −A (0.171 V + 0.62 R s) v_r
+//! a_lift =  A (0.083 V + 0.885 R s) (ω̂ × v_r)
+//! ds/dt  = −(½ρπR² · 0.0125 · R · D / I_b) · V · s
+//! ```
+//!
+//! Because the torque is anti-parallel to ω, the spin axis ω̂ is constant over a flight and
+//! only the magnitude `s` is integrated: the state is position, velocity and `s`
+//! (7 numbers), and the spin vector at any time is `s · ω̂`.
+
+use crate::real::{Real, lit};
+use crate::scene::PreparedScene;
+use nalgebra::Vector3;
+
+/// Quintavalla's drag coefficient at zero spin.
+pub const CD0: f64 = 0.171;
+/// Quintavalla's drag coefficient slope in the spin parameter.
+pub const CD_SP: f64 = 0.62;
+/// Quintavalla's lift coefficient at zero spin (for ω ≠ 0).
+pub const CL0: f64 = 0.083;
+/// Quintavalla's lift coefficient slope in the spin parameter.
+pub const CL_SP: f64 = 0.885;
+/// Quintavalla's spin-decay (moment) coefficient slope in the spin parameter.
+pub const CM_SP: f64 = 0.0125;
+
+/// Drag coefficient `C_D = 0.171 + 0.62 Sp`.
+#[must_use]
+pub fn drag_coefficient<T: Real>(spin_parameter: T) -> T {
+    lit::<T>(CD0) + lit::<T>(CD_SP) * spin_parameter
+}
+
+/// Lift coefficient `C_L = 0.083 + 0.885 Sp` (the lift itself is zero when ω = 0).
+#[must_use]
+pub fn lift_coefficient<T: Real>(spin_parameter: T) -> T {
+    lit::<T>(CL0) + lit::<T>(CL_SP) * spin_parameter
+}
+
+/// Moment coefficient of the spin-decay torque `C_M = 0.0125 Sp`.
+#[must_use]
+pub fn moment_coefficient<T: Real>(spin_parameter: T) -> T {
+    lit::<T>(CM_SP) * spin_parameter
+}
+
+/// The integrated state: position (m) 0..3, velocity (m/s) 3..6, spin magnitude (rad/s) 6.
+pub(crate) type State<T> = [T; 7];
+
+/// Index of the height y in [`State`].
+pub(crate) const Y: usize = 1;
+/// Index of the vertical velocity in [`State`].
+pub(crate) const VY: usize = 4;
+/// Index of the spin magnitude in [`State`].
+pub(crate) const S: usize = 6;
+
+/// The right-hand side `dy/dt = f(y)` of a flight.
+pub(crate) trait Rhs<T: Real> {
+    /// Evaluates the derivative.
+    fn eval(&self, y: &State<T>) -> State<T>;
+}
+
+/// The flight dynamics of one shot: a prepared scene and the (constant) spin axis.
+///
+/// Disabled effects are skipped by branches on the scene's flags: they are constant for
+/// the whole flight, so the branches are perfectly predicted (measured in docs/flight.md
+/// against compile-time flags, [`Switches`]).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Dynamics<'a, T: Real> {
+    pub(crate) scene: &'a PreparedScene<T>,
+    /// ω̂, or the zero vector when ω = 0 (no lift).
+    pub(crate) axis: Vector3<T>,
+}
+
+impl<T: Real> Dynamics<'_, T> {
+    /// The derivative with the effect switches given explicitly (constants fold away).
+    #[inline(always)]
+    fn eval_switched(
+        &self,
+        y: &State<T>,
+        drag: bool,
+        lift: bool,
+        decay: bool,
+        wind: bool,
+    ) -> State<T> {
+        let p = self.scene;
+        let v = Vector3::new(y[3], y[4], y[5]);
+        let s = y[S];
+        let mut a = Vector3::new(T::zero(), -p.gravity, T::zero());
+        let mut ds = T::zero();
+        if drag || lift || decay {
+            let vr = if wind { v - p.wind.at(y[Y]) } else { v };
+            let speed = vr.norm_squared().sqrt();
+            if drag {
+                a -= vr * (p.drag_v * speed + p.drag_s * s);
+            }
+            if lift {
+                a += self.axis.cross(&vr) * (p.lift_v * speed + p.lift_s * s);
+            }
+            if decay {
+                ds = -p.decay * speed * s;
+            }
+        }
+        [v.x, v.y, v.z, a.x, a.y, a.z, ds]
+    }
+}
+
+impl<T: Real> Rhs<T> for Dynamics<'_, T> {
+    #[inline(always)]
+    fn eval(&self, y: &State<T>) -> State<T> {
+        let e = &self.scene.effects;
+        let wind = self.scene.has_wind();
+        self.eval_switched(y, e.drag, e.lift, e.spin_decay, wind)
+    }
+}
+
+/// The same dynamics with the effects fixed at compile time (monomorphised): used only to
+/// measure what runtime branches cost (benches/flight.rs, docs/flight.md).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Switches<
+    'a,
+    T: Real,
+    const DRAG: bool,
+    const LIFT: bool,
+    const DECAY: bool,
+    const WIND: u8,
+>(pub(crate) Dynamics<'a, T>);
+
+impl<T: Real, const DRAG: bool, const LIFT: bool, const DECAY: bool, const WIND: u8> Rhs<T>
+    for Switches<'_, T, DRAG, LIFT, DECAY, WIND>
+{
+    #[inline(always)]
+    fn eval(&self, y: &State<T>) -> State<T> {
+        self.0.eval_switched(y, DRAG, LIFT, DECAY, WIND != 0)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ball::Ball;
+    use crate::scene::Scene;
+    use crate::wind::Wind;
+
+    #[test]
+    fn finite_when_moving_with_the_wind_and_without_spin() {
+        let w = Vector3::new(5.0_f64, 0.0, -2.0);
+        let scene = Scene {
+            wind: Wind::Uniform(w),
+            ..Scene::default()
+        };
+        let Ok(p) = scene.prepare(&Ball::standard()) else {
+            panic!()
+        };
+        for axis in [Vector3::zeros(), Vector3::z()] {
+            let d = Dynamics { scene: &p, axis };
+            let f = d.eval(&[
+                0.0,
+                3.0,
+                0.0,
+                w.x,
+                w.y,
+                w.z,
+                if axis.z > 0.0 { 300.0 } else { 0.0 },
+            ]);
+            assert!(f.iter().all(|x| x.is_finite()));
+            assert!((f[4] + 9.80665).abs() < 1e-15 && f[3] == 0.0 && f[5] == 0.0 && f[6] == 0.0);
+        }
+    }
+
+    #[test]
+    fn matches_the_coefficient_form() {
+        // Direct evaluation of q·C·direction against the divided-out hot-loop form.
+        let ball = Ball::<f64>::standard();
+        let Ok(p) = Scene::default().prepare(&ball) else {
+            panic!()
+        };
+        let axis = Vector3::new(0.1, -0.2, 0.97).normalize();
+        let (v, s) = (Vector3::new(60.0, 9.0, -3.0), 250.0);
+        let d = Dynamics { scene: &p, axis };
+        let f = d.eval(&[0.0, 0.0, 0.0, v.x, v.y, v.z, s]);
+        let big_v = v.norm();
+        let sp = s * ball.radius_m() / big_v;
+        let q = 0.5 * 1.225 * core::f64::consts::PI * ball.radius_m().powi(2) * big_v * big_v;
+        let force = -v / big_v * q * drag_coefficient(sp)
+            + axis.cross(&(v / big_v)) * q * lift_coefficient(sp);
+        let a = force / ball.mass_kg() - Vector3::new(0.0, 9.80665, 0.0);
+        assert!((Vector3::new(f[3], f[4], f[5]) - a).norm() < 1e-12);
+        let torque = q * moment_coefficient(sp) * ball.diameter_m();
+        assert!((f[6] + torque / ball.inertia_kgm2()).abs() < 1e-10);
+    }
+}

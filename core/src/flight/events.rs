@@ -1,0 +1,314 @@
+//! Locating events inside a step: the interpolant of an accepted step, a bracketing root
+//! finder, and the tracker that finds the apex, the landing and the recording samples.
+//!
+//! Every step carries a continuous extension in Hairer's form (Hairer, Nørsett & Wanner,
+//! *Solving ODEs I*, §II.6, `CONTD5`):
+//!
+//! ```text
+//! y(t₀ + θh) = r₁ + θ (r₂ + (1−θ) (r₃ + θ (r₄ + (1−θ) r₅)))
+//! r₁ = y₀,  r₂ = y₁ − y₀,  r₃ = h f₀ − r₂,  r₄ = r₂ − h f₁ − r₃
+//! ```
+//!
+//! With `r₅ = 0` this is the cubic Hermite interpolant through `(y₀, f₀, y₁, f₁)` (used by
+//! Euler and RK4; O(h⁴) locally). Dormand–Prince adds Shampine's
+//! `r₅ = h Σ dᵢ kᵢ`, the 4th-order dense output of Dormand & Prince (1980).
+//! The landing is the root of `y(θ) − h_land`, the apex the root of `v_y(θ)`: both inside
+//! the step, never a step end or the highest sample.
+
+use super::{Recorder, Sample};
+use crate::aero::{S, State, VY, Y};
+use crate::error::{Error, Result};
+use crate::real::{Real, lit};
+use nalgebra::Vector3;
+
+/// Dense-output weights dᵢ of DOPRI5 (Hairer's `CONTD5`), for k₁, k₃, k₄, k₅, k₆, k₇.
+pub(crate) const DP_DENSE: [f64; 6] = [
+    -12_715_105_075.0 / 11_282_082_432.0,
+    87_487_479_700.0 / 32_700_410_799.0,
+    -10_690_763_975.0 / 1_880_347_072.0,
+    701_980_252_875.0 / 199_316_789_632.0,
+    -1_453_857_185.0 / 822_651_844.0,
+    69_997_945.0 / 29_380_423.0,
+];
+
+/// One accepted step and what its interpolant needs.
+pub(crate) struct Step<'a, T> {
+    /// Step size (s).
+    pub(crate) h: T,
+    /// State at the start.
+    pub(crate) y0: &'a State<T>,
+    /// State at the end.
+    pub(crate) y1: &'a State<T>,
+    /// Derivative at the start.
+    pub(crate) f0: &'a State<T>,
+    /// Derivative at the end.
+    pub(crate) f1: &'a State<T>,
+    /// Dormand–Prince stages k₃..k₆ for the 4th-order dense output (None: Hermite).
+    pub(crate) mid: Option<[&'a State<T>; 4]>,
+}
+
+/// Coefficients `r₁..r₅` of one component's interpolant.
+#[derive(Clone, Copy)]
+struct Poly<T>([T; 5]);
+
+impl<T: Real> Poly<T> {
+    #[inline]
+    fn at(&self, th: T) -> T {
+        let [r1, r2, r3, r4, r5] = self.0;
+        let th1 = T::one() - th;
+        r1 + th * (r2 + th1 * (r3 + th * (r4 + th1 * r5)))
+    }
+}
+
+impl<T: Real> Step<'_, T> {
+    /// The interpolant coefficients of component `i` (the values at index `i` of the
+    /// states; `get` keeps it panic-free for any `i`).
+    #[inline]
+    fn poly_of(&self, i: usize) -> Poly<T> {
+        let g = |s: &State<T>| s.get(i).copied().unwrap_or_else(T::zero);
+        let (y0, y1) = (g(self.y0), g(self.y1));
+        let r2 = y1 - y0;
+        let r3 = self.h * g(self.f0) - r2;
+        let r4 = r2 - self.h * g(self.f1) - r3;
+        let r5 = match self.mid {
+            None => T::zero(),
+            Some([k3, k4, k5, k6]) => {
+                let [d1, d3, d4, d5, d6, d7] = DP_DENSE;
+                self.h
+                    * (lit::<T>(d1) * g(self.f0)
+                        + lit::<T>(d3) * g(k3)
+                        + lit::<T>(d4) * g(k4)
+                        + lit::<T>(d5) * g(k5)
+                        + lit::<T>(d6) * g(k6)
+                        + lit::<T>(d7) * g(self.f1))
+            }
+        };
+        Poly([y0, r2, r3, r4, r5])
+    }
+
+    /// The whole interpolated state at `θ ∈ [0, 1]`.
+    pub(crate) fn state_at(&self, th: T) -> State<T> {
+        let mut out = *self.y0;
+        for (i, o) in out.iter_mut().enumerate() {
+            *o = self.poly_of(i).at(th);
+        }
+        out
+    }
+}
+
+/// The root of `f` in `[a, b]`, given `f(a)` and `f(b)` of opposite signs (or `f(b) = 0`):
+/// the Illinois variant of regula falsi (Dowell & Jarratt 1971), superlinear and always
+/// bracketed. At most 64 iterations; stops when the bracket is a few ulps wide.
+pub(crate) fn find_root<T: Real>(
+    f: impl Fn(T) -> T,
+    mut a: T,
+    mut b: T,
+    mut fa: T,
+    mut fb: T,
+) -> T {
+    if fb == T::zero() {
+        return b;
+    }
+    let half = lit::<T>(0.5);
+    let tiny = T::default_epsilon() * lit(4.0);
+    let mut side = 0_i8;
+    let mut c = b;
+    for _ in 0..64 {
+        let denom = fb - fa;
+        let mut next = if denom != T::zero() {
+            (a * fb - b * fa) / denom
+        } else {
+            (a + b) * half
+        };
+        if !(next > a.min(b) && next < a.max(b)) {
+            next = (a + b) * half;
+        }
+        if next == c {
+            break;
+        }
+        c = next;
+        let fc = f(c);
+        if fc == T::zero() {
+            break;
+        }
+        if (fc > T::zero()) == (fa > T::zero()) {
+            a = c;
+            fa = fc;
+            if side == -1 {
+                fb *= half;
+            }
+            side = -1;
+        } else {
+            b = c;
+            fb = fc;
+            if side == 1 {
+                fa *= half;
+            }
+            side = 1;
+        }
+        if (b - a).abs() <= tiny {
+            break;
+        }
+    }
+    c
+}
+
+/// The landing found inside a step: time and interpolated state.
+pub(crate) struct Landing<T> {
+    pub(crate) time: T,
+    pub(crate) state: State<T>,
+}
+
+/// Tracks the apex, the landing and the recording across accepted steps.
+pub(crate) struct Tracker<'r, 'b, T: Real> {
+    landing_height: T,
+    /// Apex (time, height) so far.
+    pub(crate) apex_time: T,
+    pub(crate) apex_height: T,
+    axis: Vector3<T>,
+    recorder: Option<&'r mut Recorder<'b, T>>,
+    next_sample: u32,
+}
+
+impl<'r, 'b, T: Real> Tracker<'r, 'b, T> {
+    pub(crate) fn new(
+        landing_height: T,
+        y0: &State<T>,
+        axis: Vector3<T>,
+        recorder: Option<&'r mut Recorder<'b, T>>,
+    ) -> Self {
+        Self {
+            landing_height,
+            apex_time: T::zero(),
+            apex_height: y0[Y],
+            axis,
+            recorder,
+            next_sample: 0,
+        }
+    }
+
+    /// Processes one accepted step starting at `t0`: the apex if `v_y` turns negative in it,
+    /// the landing if the ball comes down through the landing height in it, and the
+    /// recording samples that fall in it.
+    ///
+    /// # Errors
+    /// [`Error::NoLanding`] when the ball peaks at or below the landing height.
+    pub(crate) fn on_step(&mut self, t0: T, step: &Step<'_, T>) -> Result<Option<Landing<T>>> {
+        let h = step.h;
+        let (apex, landing) = self.locate(step);
+        if let Some((th, ya)) = apex {
+            if ya > self.apex_height {
+                self.apex_height = ya;
+                self.apex_time = t0 + th * h;
+            }
+            if ya <= self.landing_height {
+                return Err(Error::NoLanding);
+            }
+        }
+        if self.recorder.is_some() {
+            self.record(t0, step, landing);
+        }
+        Ok(landing.map(|th| Landing {
+            time: t0 + th * h,
+            state: step.state_at(th),
+        }))
+    }
+
+    /// Where in the step the landing is (θ), if it is in this step; no side effects.
+    pub(crate) fn landing_in(&self, step: &Step<'_, T>) -> Option<T> {
+        self.locate(step).1
+    }
+
+    /// The apex `(θ, height)` if `v_y` turns negative in the step, and the landing θ if the
+    /// ball comes down through the landing height in it (not when it peaks below it).
+    fn locate(&self, step: &Step<'_, T>) -> (Option<(T, T)>, Option<T>) {
+        let (y0, y1) = (step.y0, step.y1);
+        let hl = self.landing_height;
+        // Where in the step the ball is (last) above the landing height, and f there.
+        let mut above: Option<(T, T)> = (y0[Y] > hl).then(|| (T::zero(), y0[Y] - hl));
+        let mut apex = None;
+        if y0[VY] > T::zero() && y1[VY] <= T::zero() {
+            let vy = step.poly_of(VY);
+            let th = find_root(|x| vy.at(x), T::zero(), T::one(), y0[VY], y1[VY]);
+            let ya = step.poly_of(Y).at(th);
+            apex = Some((th, ya));
+            above = (ya > hl).then(|| (th, ya - hl));
+        }
+        let landing = match above {
+            Some((lo, f_lo)) if y1[Y] <= hl => {
+                let py = step.poly_of(Y);
+                Some(find_root(|x| py.at(x) - hl, lo, T::one(), f_lo, y1[Y] - hl))
+            }
+            _ => None,
+        };
+        (apex, landing)
+    }
+
+    /// Records the samples `t = k·Δ` inside the step (before the landing), then the
+    /// landing itself. Stops, flagging the recorder full, when the buffer is.
+    fn record(&mut self, t0: T, step: &Step<'_, T>, landing: Option<T>) {
+        let Some(rec) = self.recorder.as_deref_mut() else {
+            return;
+        };
+        let h = step.h;
+        let end = landing.unwrap_or_else(T::one);
+        while !rec.full {
+            let ts = lit::<T>(f64::from(self.next_sample)) * rec.interval_s;
+            let th = (ts - t0) / h;
+            if th > end || (landing.is_some() && th >= end) {
+                break;
+            }
+            let th = th.max(T::zero());
+            rec.push(Sample::new(ts, &step.state_at(th), &self.axis));
+            self.next_sample = self.next_sample.saturating_add(1);
+        }
+        if let Some(th) = landing {
+            rec.push(Sample::new(t0 + th * h, &step.state_at(th), &self.axis));
+        }
+    }
+}
+
+impl<T: Real> Sample<T> {
+    fn new(time_s: T, y: &State<T>, axis: &Vector3<T>) -> Self {
+        Self {
+            time_s,
+            position_m: Vector3::new(y[0], y[1], y[2]),
+            velocity_mps: Vector3::new(y[3], y[4], y[5]),
+            spin_radps: axis * y[S],
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn illinois_finds_roots() {
+        let r = find_root(|x: f64| x * x - 0.3, 0.0, 1.0, -0.3, 0.7);
+        assert!((r - 0.3_f64.sqrt()).abs() < 1e-15);
+        let r = find_root(|x: f32| 0.2 - x * x * x, 0.0, 1.0, 0.2, -0.8);
+        assert!((r - 0.2_f32.cbrt()).abs() < 1e-6);
+    }
+
+    #[test]
+    fn hermite_form_reproduces_a_cubic() {
+        // y = 1 + 2t − t² + 0.5 t³ on [0, 2]
+        let y = |t: f64| 1.0 + 2.0 * t - t * t + 0.5 * t * t * t;
+        let dy = |t: f64| 2.0 - 2.0 * t + 1.5 * t * t;
+        let h = 2.0;
+        let st = |v: f64| [v, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0];
+        let (y0, y1, f0, f1) = (st(y(0.0)), st(y(h)), st(dy(0.0)), st(dy(h)));
+        let step = Step {
+            h,
+            y0: &y0,
+            y1: &y1,
+            f0: &f0,
+            f1: &f1,
+            mid: None,
+        };
+        for th in [0.0, 0.1, 0.5, 0.77, 1.0] {
+            assert!((step.state_at(th)[0] - y(th * h)).abs() < 1e-14);
+        }
+    }
+}

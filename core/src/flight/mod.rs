@@ -1,0 +1,432 @@
+//! Ball flight: from launch conditions to where and how the ball lands (PHYSICS.md,
+//! "Flight").
+//!
+//! The model is Quintavalla's (see [`crate::aero`]) with the effects, air and wind a
+//! [`Scene`] asks for. The state (position, velocity, spin magnitude about the fixed spin
+//! axis) is integrated by an [`Integrator`] — explicit Euler, classical RK4 or adaptive
+//! Dormand–Prince 5(4) — and the landing and the apex are located *inside* the step by
+//! the step's interpolant and a bracketing root finder, never taken as a step end or the
+//! highest sample. Every result reports the number of force evaluations it cost.
+//!
+//! ```
+//! use carry_core::{Ball, Launch, flight::{self, Integrator}, scene::Scene, units::{deg, rpm}};
+//! let launch = Launch { ball_speed_mps: 74.65568_f64, launch_angle_rad: deg(10.9),
+//!     launch_direction_rad: 0.0, backspin_radps: rpm(2686.0), sidespin_radps: 0.0 };
+//! let out = flight::fly(&Ball::standard(), &launch.ball_motion()?, &Scene::default(),
+//!     &Integrator::default(), None)?;
+//! assert!((out.carry_m - 247.503).abs() < 1e-3);
+//! # Ok::<(), carry_core::Error>(())
+//! ```
+
+mod events;
+mod integrate;
+
+pub use integrate::Stats;
+
+use crate::aero::{Dynamics, Rhs, S, State, Y};
+use crate::ball::{Ball, BallMotion};
+use crate::error::{Error, Field, Reason, Result};
+use crate::real::{Real, lit};
+use crate::scene::{PreparedScene, Scene};
+use crate::validate::{positive, positive_or_infinite};
+use heapless::vec::VecView;
+use integrate::Adaptive;
+use nalgebra::Vector3;
+
+/// How the flight is integrated.
+///
+/// [`Integrator::default`] is the documented default fidelity for the precision `T`
+/// (see its docs and docs/flight.md).
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub enum Integrator<T> {
+    /// Explicit Euler with a fixed step (s): first order, 1 force evaluation per step.
+    Euler {
+        /// Step size (s), finite and positive.
+        step_s: T,
+    },
+    /// Classical 4th-order Runge–Kutta with a fixed step (s): 4 evaluations per step.
+    Rk4 {
+        /// Step size (s), finite and positive.
+        step_s: T,
+    },
+    /// Adaptive embedded Dormand–Prince 5(4) (FSAL: 6 evaluations per step) with the
+    /// mixed error test `|eᵢ| ≤ atol + rtol·max(|y₀ᵢ|, |y₁ᵢ|)` on position (m), velocity
+    /// (m/s) and spin (rad/s).
+    DormandPrince {
+        /// Relative tolerance, finite and positive.
+        rtol: T,
+        /// Absolute tolerance, finite and positive.
+        atol: T,
+        /// First trial step (s), finite and positive.
+        initial_step_s: T,
+        /// Largest step (s), positive (may be +∞).
+        max_step_s: T,
+    },
+}
+
+/// Default-fidelity tolerance of the adaptive integrator in `f64`.
+pub const DEFAULT_TOLERANCE_F64: f64 = 4.0e-5;
+/// Default-fidelity tolerance of the adaptive integrator in `f32`.
+pub const DEFAULT_TOLERANCE_F32: f64 = 3.0e-4;
+/// Default first trial step of the adaptive integrator (s).
+pub const DEFAULT_INITIAL_STEP_S: f64 = 0.1;
+/// Cap on the first adaptive step (s) when the ball starts in a wind profile's singular
+/// ground layer (see [`crate::wind::Wind::Profile`]).
+pub const PROFILE_INITIAL_STEP_S: f64 = 1.0e-5;
+
+impl<T: Real> Integrator<T> {
+    /// Dormand–Prince 5(4) with `rtol = atol = tolerance`, the default first step and no
+    /// step limit.
+    #[must_use]
+    pub fn dormand_prince(tolerance: T) -> Self {
+        Self::DormandPrince {
+            rtol: tolerance,
+            atol: tolerance,
+            initial_step_s: lit(DEFAULT_INITIAL_STEP_S),
+            max_step_s: T::max_value().unwrap_or_else(T::one),
+        }
+    }
+
+    /// A reference-grade setting: Dormand–Prince at a tolerance of 1e-12 in `f64`
+    /// (carry within 1e-8 m of the 8th-order reference), 1e-6 in `f32` (near its
+    /// rounding floor; the smallest accepted `rtol` is 4ε).
+    #[must_use]
+    pub fn tight() -> Self {
+        Self::dormand_prince(if is_single::<T>() {
+            lit(1e-6)
+        } else {
+            lit(1e-12)
+        })
+    }
+}
+
+/// True when `T` is single precision (`f32`).
+fn is_single<T: Real>() -> bool {
+    T::default_epsilon() > lit(1e-10)
+}
+
+impl<T: Real> Default for Integrator<T> {
+    /// The default fidelity: Dormand–Prince 5(4) at [`DEFAULT_TOLERANCE_F64`] in `f64`
+    /// (carry within 1 mm of the reference on the golden set) or
+    /// [`DEFAULT_TOLERANCE_F32`] in `f32` (within 1 cm). See docs/flight.md.
+    fn default() -> Self {
+        Self::dormand_prince(lit(if is_single::<T>() {
+            DEFAULT_TOLERANCE_F32
+        } else {
+            DEFAULT_TOLERANCE_F64
+        }))
+    }
+}
+
+/// One recorded trajectory sample.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct Sample<T: Real> {
+    /// Time since launch (s).
+    pub time_s: T,
+    /// Ball position (m, G).
+    pub position_m: Vector3<T>,
+    /// Ball velocity, ground frame (m/s, G).
+    pub velocity_mps: Vector3<T>,
+    /// Ball spin (rad/s, G).
+    pub spin_radps: Vector3<T>,
+}
+
+/// Records the trajectory into a caller-provided fixed-capacity buffer: a sample every
+/// `interval_s` from launch (interpolated, not step ends), then the landing. When the
+/// buffer fills, recording stops and [`FlightOutcome::recording_full`] is set — the
+/// flight itself completes normally.
+#[derive(Debug)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct Recorder<'a, T: Real> {
+    interval_s: T,
+    samples: &'a mut VecView<Sample<T>>,
+    full: bool,
+}
+
+impl<'a, T: Real> Recorder<'a, T> {
+    /// A recorder writing into `buffer` (cleared) every `interval_s` seconds.
+    ///
+    /// # Errors
+    /// [`Field::RecordInterval`] when `interval_s` is not finite and positive.
+    pub fn new<const N: usize>(
+        interval_s: T,
+        buffer: &'a mut heapless::Vec<Sample<T>, N>,
+    ) -> Result<Self> {
+        let interval_s = positive(interval_s, Field::RecordInterval)?;
+        buffer.clear();
+        Ok(Self {
+            interval_s,
+            samples: buffer.as_mut_view(),
+            full: false,
+        })
+    }
+
+    /// The samples recorded by the last flight.
+    #[must_use]
+    pub fn samples(&self) -> &[Sample<T>] {
+        self.samples
+    }
+
+    /// Whether the buffer filled up (later samples were dropped).
+    #[must_use]
+    pub fn is_full(&self) -> bool {
+        self.full
+    }
+
+    fn reset(&mut self) {
+        self.samples.clear();
+        self.full = false;
+    }
+
+    fn push(&mut self, sample: Sample<T>) {
+        if self.samples.push(sample).is_err() {
+            self.full = true;
+        }
+    }
+}
+
+/// Where and how the ball lands.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct FlightOutcome<T: Real> {
+    /// Carry: horizontal distance from the tee to the landing point (m).
+    pub carry_m: T,
+    /// Carry along the target line, landing X − tee X (m).
+    pub carry_x_m: T,
+    /// Side: landing Z − tee Z, + right (m).
+    pub side_m: T,
+    /// Apex: the highest Y of the flight (m, G; the tee's ground is Y = 0), located on the
+    /// interpolant where `v_y = 0`. The launch height if the ball never rises.
+    pub apex_m: T,
+    /// Time of the apex (s).
+    pub apex_time_s: T,
+    /// Flight time, launch to landing (s).
+    pub flight_time_s: T,
+    /// Landing angle below the horizontal (rad), ground frame: `atan2(−v_y, |v_xz|)`.
+    pub landing_angle_rad: T,
+    /// Landing speed |v|, ground frame (m/s).
+    pub landing_speed_mps: T,
+    /// Spin at landing |ω| (rad/s).
+    pub landing_spin_radps: T,
+    /// Landing position (m, G).
+    pub landing_position_m: Vector3<T>,
+    /// Landing velocity, ground frame (m/s, G).
+    pub landing_velocity_mps: Vector3<T>,
+    /// Spin vector at landing (rad/s, G).
+    pub landing_spin_vector_radps: Vector3<T>,
+    /// The air density flown through (kg/m³).
+    pub air_density_kgm3: T,
+    /// Work done: force evaluations, accepted and rejected steps.
+    pub stats: Stats,
+    /// The recorder's buffer filled up and samples were dropped.
+    pub recording_full: bool,
+}
+
+/// Flies `launch` from the scene's tee through `scene` to the landing.
+///
+/// Validates everything once, then integrates. For many shots in one scene, prepare it
+/// once ([`Scene::prepare`]) and call [`PreparedScene::fly`].
+///
+/// # Errors
+/// [`Error::InvalidInput`] for an invalid scene, launch or integrator (NaN/∞, negative
+/// density, humidity outside [0, 1], landing height not finite, non-positive step or
+/// tolerance); [`Error::NoLanding`] when the ball never comes down through the landing
+/// height; [`Error::TimeLimit`]; [`Error::StepSizeUnderflow`] when the adaptive step cannot
+/// meet the tolerance (also for `rtol` below 4ε of `T`); [`Error::Unstable`] when a fixed step diverges.
+pub fn fly<T: Real>(
+    ball: &Ball<T>,
+    launch: &BallMotion<T>,
+    scene: &Scene<T>,
+    integrator: &Integrator<T>,
+    recorder: Option<&mut Recorder<'_, T>>,
+) -> Result<FlightOutcome<T>> {
+    scene.prepare(ball)?.fly(launch, integrator, recorder)
+}
+
+impl<T: Real> PreparedScene<T> {
+    /// Flies `launch` through this prepared scene (see [`fly`]).
+    ///
+    /// # Errors
+    /// As [`fly`], without the scene's validation errors.
+    pub fn fly(
+        &self,
+        launch: &BallMotion<T>,
+        integrator: &Integrator<T>,
+        recorder: Option<&mut Recorder<'_, T>>,
+    ) -> Result<FlightOutcome<T>> {
+        run(self, launch, integrator, recorder, |d| d)
+    }
+}
+
+/// The flight with the dynamics `make` builds from the runtime dynamics (the production
+/// path passes them through; the benchmark substitutes compile-time switches).
+fn run<'s, T: Real, R: Rhs<T>>(
+    scene: &'s PreparedScene<T>,
+    launch: &BallMotion<T>,
+    integrator: &Integrator<T>,
+    recorder: Option<&mut Recorder<'_, T>>,
+    make: impl FnOnce(Dynamics<'s, T>) -> R,
+) -> Result<FlightOutcome<T>> {
+    let launch = launch.validated()?;
+    let method = integrator.method()?;
+    let spin = launch.spin_radps.norm();
+    if !spin.is_finite() {
+        return Err(Error::invalid(Field::BallSpin, Reason::OutOfRange));
+    }
+    if !launch.velocity_mps.norm().is_finite() {
+        return Err(Error::invalid(Field::BallVelocity, Reason::OutOfRange));
+    }
+    let axis = if spin > T::zero() {
+        launch.spin_radps / spin
+    } else {
+        Vector3::zeros()
+    };
+    let p0 = scene.launch_position;
+    let v0 = launch.velocity_mps;
+    let y0: State<T> = [p0.x, p0.y, p0.z, v0.x, v0.y, v0.z, spin];
+    if y0[Y] <= scene.landing_height && v0.y <= T::zero() {
+        // At or below the landing height and not rising: it never comes down through it.
+        return Err(Error::NoLanding);
+    }
+    let rhs = make(Dynamics { scene, axis });
+    let mut recorder = recorder;
+    if let Some(r) = recorder.as_deref_mut() {
+        r.reset();
+    }
+    let mut tracker =
+        events::Tracker::new(scene.landing_height, &y0, axis, recorder.as_deref_mut());
+    let mut stats = Stats::default();
+    let limit = scene.time_limit;
+    let landing = match method {
+        Method::Fixed { step, rk4 } => {
+            integrate::fixed(&rhs, y0, step, rk4, limit, &mut tracker, &mut stats)
+        }
+        Method::Adaptive(mut cfg) => {
+            if scene.profile_singular_at(y0[Y]) {
+                // The profile's (y/h_ref)^k has an infinite derivative at the ground, where
+                // the embedded error estimate is unreliable: start with a small step and let
+                // the controller grow it (×5 per step) once the ball is off the ground.
+                cfg.initial_step = cfg.initial_step.min(lit(PROFILE_INITIAL_STEP_S));
+            }
+            // Likewise at the landing: redo the landing step to end there.
+            cfg.refine_landing = scene.profile_singular_at(scene.landing_height);
+            integrate::dormand_prince(&rhs, y0, cfg, limit, &mut tracker, &mut stats)
+        }
+    }?;
+    let (apex_m, apex_time_s) = (tracker.apex_height, tracker.apex_time);
+    let y = landing.state;
+    // The step ends are checked finite, but the landing is interpolated inside the step:
+    // with absurd (finite) launches the interpolant overflows (∞ − ∞ = NaN; found by
+    // fuzzing, issue 7). Never report it.
+    let speed = Vector3::new(y[3], y[4], y[5]).norm();
+    if !(y.iter().all(|x| x.is_finite())
+        && speed.is_finite()
+        && landing.time.is_finite()
+        && tracker.apex_height.is_finite())
+    {
+        return Err(Error::Unstable);
+    }
+    let position = Vector3::new(y[0], y[1], y[2]);
+    let velocity = Vector3::new(y[3], y[4], y[5]);
+    let carry_x = position.x - p0.x;
+    let side = position.z - p0.z;
+    Ok(FlightOutcome {
+        carry_m: carry_x.hypot(side),
+        carry_x_m: carry_x,
+        side_m: side,
+        apex_m,
+        apex_time_s,
+        flight_time_s: landing.time,
+        landing_angle_rad: (-velocity.y).atan2(velocity.x.hypot(velocity.z)),
+        landing_speed_mps: velocity.norm(),
+        landing_spin_radps: y[S],
+        landing_position_m: position,
+        landing_velocity_mps: velocity,
+        landing_spin_vector_radps: axis * y[S],
+        air_density_kgm3: scene.density,
+        stats,
+        recording_full: recorder.is_some_and(|r| r.is_full()),
+    })
+}
+
+/// A validated integrator.
+#[derive(Clone, Copy)]
+enum Method<T> {
+    Fixed { step: T, rk4: bool },
+    Adaptive(Adaptive<T>),
+}
+
+impl<T: Real> Integrator<T> {
+    fn method(&self) -> Result<Method<T>> {
+        Ok(match *self {
+            Self::Euler { step_s } => Method::Fixed {
+                step: positive(step_s, Field::Step)?,
+                rk4: false,
+            },
+            Self::Rk4 { step_s } => Method::Fixed {
+                step: positive(step_s, Field::Step)?,
+                rk4: true,
+            },
+            Self::DormandPrince {
+                rtol,
+                atol,
+                initial_step_s,
+                max_step_s,
+            } => {
+                let cfg = Adaptive {
+                    rtol: positive(rtol, Field::Tolerance)?,
+                    atol: positive(atol, Field::Tolerance)?,
+                    initial_step: positive(initial_step_s, Field::Step)?,
+                    max_step: positive_or_infinite(max_step_s, Field::Step)?,
+                    refine_landing: false,
+                };
+                // Below a few ulps the error test only passes by accident of cancellation
+                // (at ever smaller steps): no step size can meet such a tolerance.
+                if cfg.rtol < T::default_epsilon() * lit(4.0) {
+                    return Err(Error::StepSizeUnderflow);
+                }
+                Method::Adaptive(cfg)
+            }
+        })
+    }
+}
+
+/// Benchmark support, not part of the stable API: the same flight with the effect switches
+/// fixed at compile time (monomorphised), to measure what the runtime branches cost.
+#[doc(hidden)]
+pub mod bench {
+    use super::{BallMotion, FlightOutcome, Integrator, PreparedScene, Real, Result, run};
+    use crate::aero::Switches;
+
+    /// `WIND` switch: no wind evaluation.
+    pub const WIND_NONE: u8 = 0;
+    /// `WIND` switch: evaluate the scene's wind field.
+    pub const WIND_FIELD: u8 = 1;
+
+    /// [`PreparedScene::fly`] with the effects `DRAG`, `LIFT`, `DECAY` and wind (`WIND` ≠ 0)
+    /// fixed at compile time instead of read from the scene.
+    ///
+    /// # Errors
+    /// As [`PreparedScene::fly`].
+    pub fn fly_switched<
+        T: Real,
+        const DRAG: bool,
+        const LIFT: bool,
+        const DECAY: bool,
+        const WIND: u8,
+    >(
+        scene: &PreparedScene<T>,
+        launch: &BallMotion<T>,
+        integrator: &Integrator<T>,
+    ) -> Result<FlightOutcome<T>> {
+        run(
+            scene,
+            launch,
+            integrator,
+            None,
+            Switches::<T, DRAG, LIFT, DECAY, WIND>,
+        )
+    }
+}

@@ -1,0 +1,253 @@
+//! The scene of a flight: which effects exist, the air, the wind, the landing height, the
+//! time limit. A scene is validated once ([`Scene::prepare`]) into a [`PreparedScene`] whose
+//! per-unit-mass coefficients (`½ρπR²/m_b` and friends) the flight loop uses directly.
+//!
+//! An effect the scene does not ask for costs nothing measurable: the loop branches on the
+//! prepared flags (constant for a flight, perfectly predicted) and skips its arithmetic —
+//! no wind evaluation without wind, no air-speed `sqrt` in a vacuum, no spin-decay term
+//! without decay. See docs/flight.md for the measured cost per effect.
+
+use crate::air::Air;
+use crate::ball::Ball;
+use crate::error::{Error, Field, Reason, Result};
+use crate::real::{Real, lit};
+use crate::validate::{finite, finite_vector, non_negative, positive};
+use crate::wind::{Wind, WindField};
+use nalgebra::Vector3;
+
+/// Standard gravity (m/s²).
+pub const STANDARD_GRAVITY_MPS2: f64 = 9.80665;
+/// Largest accepted |landing height| and |launch position component| (m): 100 km.
+pub const MAX_HEIGHT_M: f64 = 1.0e5;
+/// Largest accepted gravitational acceleration (m/s²): 100 g.
+pub const MAX_GRAVITY_MPS2: f64 = 1.0e3;
+/// Default flight time limit (s): far beyond any golf shot (an 80° wedge flies ~9 s).
+pub const DEFAULT_TIME_LIMIT_S: f64 = 60.0;
+
+/// Which aerodynamic effects a flight simulates (gravity always acts).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct Effects {
+    /// Aerodynamic drag.
+    pub drag: bool,
+    /// Magnus lift.
+    pub lift: bool,
+    /// Spin decay from the aerodynamic torque (otherwise the spin stays at its launch value).
+    pub spin_decay: bool,
+}
+
+impl Effects {
+    /// The full model: drag, lift and spin decay.
+    pub const ALL: Self = Self {
+        drag: true,
+        lift: true,
+        spin_decay: true,
+    };
+    /// Gravity only: a vacuum parabola.
+    pub const GRAVITY_ONLY: Self = Self {
+        drag: false,
+        lift: false,
+        spin_decay: false,
+    };
+}
+
+impl Default for Effects {
+    fn default() -> Self {
+        Self::ALL
+    }
+}
+
+/// Everything about a flight that is not the ball or its launch.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct Scene<T: Real> {
+    /// The aerodynamic effects to simulate.
+    pub effects: Effects,
+    /// Air density: fixed, or from the weather.
+    pub air: Air<T>,
+    /// Wind: none, uniform, or a power-law profile.
+    pub wind: Wind<T>,
+    /// Height of the landing area (m, G): the flight ends when the ball comes down
+    /// through it (positive = uphill target). Finite.
+    pub landing_height_m: T,
+    /// The flight fails with [`crate::Error::TimeLimit`] if it has not landed by then (s).
+    pub time_limit_s: T,
+    /// Gravitational acceleration (m/s², acting along −Y), finite and not negative.
+    pub gravity_mps2: T,
+    /// Where the ball starts (m, G): the tee. Carry and side are measured from here.
+    pub launch_position_m: Vector3<T>,
+}
+
+impl<T: Real> Default for Scene<T> {
+    /// PHYSICS.md defaults: all effects, ρ = 1.225 kg/m³, no wind, landing at 0 m, 60 s
+    /// time limit, g = 9.80665 m/s², tee at the origin.
+    fn default() -> Self {
+        Self {
+            effects: Effects::ALL,
+            air: Air::default(),
+            wind: Wind::None,
+            landing_height_m: T::zero(),
+            time_limit_s: lit(DEFAULT_TIME_LIMIT_S),
+            gravity_mps2: lit(STANDARD_GRAVITY_MPS2),
+            launch_position_m: Vector3::zeros(),
+        }
+    }
+}
+
+/// A validated scene for one ball, with the hot loop's coefficients precomputed.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct PreparedScene<T: Real> {
+    pub(crate) effects: Effects,
+    pub(crate) gravity: T,
+    /// `A·0.171` with `A = ½ρπR²/m_b` (1/m).
+    pub(crate) drag_v: T,
+    /// `A·0.62·R` (1/rad).
+    pub(crate) drag_s: T,
+    /// `A·0.083` (1/m).
+    pub(crate) lift_v: T,
+    /// `A·0.885·R` (1/rad).
+    pub(crate) lift_s: T,
+    /// `½ρπR²·0.0125·R·D / I_b` (1/m).
+    pub(crate) decay: T,
+    pub(crate) wind: WindField<T>,
+    pub(crate) landing_height: T,
+    pub(crate) time_limit: T,
+    pub(crate) launch_position: Vector3<T>,
+    pub(crate) density: T,
+}
+
+impl<T: Real> Scene<T> {
+    /// Validates the scene for `ball` and precomputes the flight coefficients.
+    ///
+    /// # Errors
+    /// [`crate::Error::InvalidInput`] naming the offending field: air density (NaN,
+    /// infinite, negative) or weather ([`Field::Temperature`], [`Field::Humidity`],
+    /// [`Field::Pressure`], [`Field::Altitude`]), wind, [`Field::LandingHeight`] not finite,
+    /// [`Field::TimeLimit`] not finite and positive, [`Field::Gravity`] not finite or
+    /// negative, [`Field::LaunchPosition`] not finite.
+    pub fn prepare(&self, ball: &Ball<T>) -> Result<PreparedScene<T>> {
+        let density = self.air.density_kgm3()?;
+        let wind = self.wind.prepare()?;
+        // Finite is not enough: a height or a gravity near the precision's maximum
+        // overflows the landing speed to ∞ (found by fuzzing, issue 7). The bounds are far
+        // outside any golf scene and far inside f32's range.
+        let max_height = lit::<T>(MAX_HEIGHT_M);
+        let landing_height = finite(self.landing_height_m, Field::LandingHeight)?;
+        if !(landing_height.abs() <= max_height) {
+            return Err(Error::invalid(Field::LandingHeight, Reason::OutOfRange));
+        }
+        let time_limit = positive(self.time_limit_s, Field::TimeLimit)?;
+        let gravity = non_negative(self.gravity_mps2, Field::Gravity)?;
+        if !(gravity <= lit(MAX_GRAVITY_MPS2)) {
+            return Err(Error::invalid(Field::Gravity, Reason::OutOfRange));
+        }
+        let launch_position = finite_vector(&self.launch_position_m, Field::LaunchPosition)?;
+        if !(launch_position.amax() <= max_height) {
+            return Err(Error::invalid(Field::LaunchPosition, Reason::OutOfRange));
+        }
+        let r = ball.radius_m();
+        let half_rho_area = lit::<T>(0.5) * density * T::pi() * r * r;
+        let a = half_rho_area / ball.mass_kg();
+        Ok(PreparedScene {
+            effects: self.effects,
+            gravity,
+            drag_v: a * lit(crate::aero::CD0),
+            drag_s: a * lit::<T>(crate::aero::CD_SP) * r,
+            lift_v: a * lit(crate::aero::CL0),
+            lift_s: a * lit::<T>(crate::aero::CL_SP) * r,
+            decay: half_rho_area * lit::<T>(crate::aero::CM_SP) * r * ball.diameter_m()
+                / ball.inertia_kgm2(),
+            wind,
+            landing_height,
+            time_limit,
+            launch_position,
+            density,
+        })
+    }
+}
+
+impl<T: Real> PreparedScene<T> {
+    /// The air density the flight uses (kg/m³).
+    #[must_use]
+    pub fn air_density_kgm3(&self) -> T {
+        self.density
+    }
+
+    /// The effects simulated.
+    #[must_use]
+    pub fn effects(&self) -> Effects {
+        self.effects
+    }
+
+    /// The landing height (m).
+    #[must_use]
+    pub fn landing_height_m(&self) -> T {
+        self.landing_height
+    }
+
+    /// Whether a wind profile is singular near height `y`: its derivative
+    /// `k·w_ref·y^(k−1)/h_ref^k` is unbounded at the ground, and steep up to ~h_ref.
+    pub(crate) fn profile_singular_at(&self, y: T) -> bool {
+        match self.wind {
+            WindField::Profile {
+                inv_reference_height,
+                exponent,
+                ..
+            } => exponent > T::zero() && y * inv_reference_height < T::one(),
+            _ => false,
+        }
+    }
+
+    /// Whether any wind is evaluated (an aerodynamic effect and a wind).
+    #[inline(always)]
+    pub(crate) fn has_wind(&self) -> bool {
+        !matches!(self.wind, WindField::None)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::error::{Error, Reason};
+
+    #[test]
+    fn rejects_bad_scene() {
+        let ball = Ball::<f64>::standard();
+        let s = Scene {
+            landing_height_m: f64::INFINITY,
+            ..Scene::default()
+        };
+        assert_eq!(
+            s.prepare(&ball),
+            Err(Error::invalid(Field::LandingHeight, Reason::NotFinite))
+        );
+        let s = Scene {
+            time_limit_s: 0.0,
+            ..Scene::default()
+        };
+        assert_eq!(
+            s.prepare(&ball),
+            Err(Error::invalid(Field::TimeLimit, Reason::NotPositive))
+        );
+        let s = Scene {
+            air: Air::Density(f64::NAN),
+            ..Scene::default()
+        };
+        assert_eq!(
+            s.prepare(&ball),
+            Err(Error::invalid(Field::AirDensity, Reason::NotFinite))
+        );
+    }
+
+    #[test]
+    fn coefficients() {
+        let ball = Ball::<f64>::standard();
+        let Ok(p) = Scene::default().prepare(&ball) else {
+            panic!()
+        };
+        let a = 0.5 * 1.225 * core::f64::consts::PI * 0.021336_f64.powi(2) / 0.04593;
+        assert!((p.drag_v - a * 0.171).abs() < 1e-15);
+        assert!(!p.has_wind());
+    }
+}
