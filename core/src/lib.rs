@@ -33,6 +33,7 @@ pub mod impact;
 pub mod launch;
 pub mod linalg;
 pub mod real;
+pub mod shot;
 pub mod units;
 mod validate;
 
