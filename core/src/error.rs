@@ -155,6 +155,10 @@ pub enum Error {
     /// A fixed-step integrator produced a non-finite state: the step is too large for
     /// this flight (explicit methods are only conditionally stable).
     Unstable,
+    /// The adaptive integrator used up its step budget
+    /// ([`crate::flight::MAX_ADAPTIVE_STEPS`]) before landing: the flight is too stiff or
+    /// too long for the tolerance. Bounds the run time of every flight (firmware never hangs).
+    StepLimit,
 }
 
 /// Result alias of the core.
@@ -254,6 +258,9 @@ impl fmt::Display for Error {
             }
             Self::Unstable => {
                 f.write_str("the fixed-step integrator diverged: the step is too large")
+            }
+            Self::StepLimit => {
+                f.write_str("the adaptive integrator used up its step budget before landing")
             }
         }
     }

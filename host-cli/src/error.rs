@@ -153,6 +153,10 @@ impl From<Error> for InputError {
                 "step",
                 "the fixed-step integrator diverged: the step is too large",
             ),
+            Error::StepLimit => Self::new(
+                "tolerance",
+                "the integrator used up its step budget before landing (loosen the tolerance)",
+            ),
             // A future core error: still one line, never a panic.
             other => Self::new("precision", other.to_string()),
         }

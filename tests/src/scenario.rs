@@ -2,7 +2,7 @@
 
 use carry_core::real::lit;
 use carry_core::units::deg;
-use carry_core::{Ball, ClubHead, ClubSpec, Delivery, FaceLocation, Real, Strike};
+use carry_core::{Ball, ClubHead, ClubSpec, Delivery, FaceLocation, PRESETS, Real, Strike};
 use nalgebra::{Matrix3, Vector3};
 use proptest::prelude::*;
 
@@ -145,5 +145,24 @@ pub fn scenario() -> impl Strategy<Value = Scenario> {
         club_spin_radps: d.6,
         height_m: d.7,
         toe_m: d.8,
+    })
+}
+
+/// A scenario with one of the built-in preset clubs (restitution up to the preset's) and any
+/// delivery a golfer produces: the realistic part of the domain.
+pub fn preset_scenario() -> impl Strategy<Value = Scenario> {
+    (0..PRESETS.len(), 0.0..=1.0_f64, scenario()).prop_map(|(i, e_frac, s)| {
+        let p = &PRESETS[i];
+        Scenario {
+            club_mass_kg: p.mass_kg,
+            inertia_diag: p.inertia_kgm2,
+            products_frac: [0.0; 3],
+            loft_deg: p.loft_deg,
+            roll_radius_m: p.roll_radius_m,
+            bulge_radius_m: p.bulge_radius_m,
+            cg_to_face_m: [p.cg_to_face_m, 0.0, 0.0],
+            restitution: p.restitution * e_frac,
+            ..s
+        }
     })
 }

@@ -7,7 +7,7 @@ use carry_core::linalg::Pivoting;
 use carry_core::real::{lit, to_f64};
 use carry_core::{Ball, ClubSpec, Delivery, Error, FaceLocation, Real};
 use carry_tests::invariants::budget;
-use carry_tests::scenario::{Scenario, scenario};
+use carry_tests::scenario::{Scenario, preset_scenario, scenario};
 use nalgebra::Vector3;
 use proptest::prelude::*;
 
@@ -47,12 +47,6 @@ fn check_invariants<T: Real>(s: &Scenario, solver: Solver, tol: f64) -> Result<(
         before.angular,
         after.angular
     );
-    prop_assert!(
-        after.energy <= before.energy * (1.0 + tol),
-        "energy {} → {}",
-        before.energy,
-        after.energy
-    );
     // no tangential slip; normal separation −e n·u⁰
     let c = &out.contact;
     let u_after = (out.ball.velocity_mps + out.ball.spin_radps.cross(&c.ball_lever_m))
@@ -60,6 +54,14 @@ fn check_invariants<T: Real>(s: &Scenario, solver: Solver, tol: f64) -> Result<(
     let Ok(problem) = Problem::new(&club, &ball, &strike) else {
         return Err(TestCaseError::fail("problem"));
     };
+    // Work–energy identity of an impulse: ΔT = ½ P·(u⁰ + u). (Energy need not fall: see
+    // `check_energy` and the note there.)
+    let work = 0.5 * to_f64(out.impulse_ns.dot(&(problem.approach_mps + u_after)));
+    let d_energy = after.energy - before.energy;
+    prop_assert!(
+        (d_energy - work).abs() <= 8.0 * tol * before.energy,
+        "ΔT {d_energy} vs ½P·(u⁰+u) {work}"
+    );
     let target = problem.target_velocity_mps();
     let u_scale = to_f64(problem.approach_mps.norm());
     let du = (u_after - target).map(to_f64).norm();
@@ -73,6 +75,35 @@ fn check_invariants<T: Real>(s: &Scenario, solver: Solver, tol: f64) -> Result<(
             .iter()
             .chain(out.ball.spin_radps.iter())
             .all(|x| x.is_finite())
+    );
+    Ok(())
+}
+
+/// Kinetic energy never increases for the realistic clubs (presets, e up to the preset's).
+///
+/// Not over the whole domain: Newton's restitution with sticking lets the tangential
+/// impulse do positive work, ½P_t·u⁰_t > 0, when the collision matrix couples normal and
+/// tangential directions strongly (a light, low-inertia head struck high or far off-centre
+/// with e ≈ 1). proptest found ΔT/T = +1.0e-4 (regression file), confirmed independently
+/// with numpy from PHYSICS.md's equations; the robustness suite pins a +0.94 % case at the
+/// face edge. PHYSICS.md's "never increases" holds for every golden case and for the preset
+/// clubs over a golfer's delivery range (toe ±30 mm, height ±20 mm, face and path ±10°),
+/// which this property checks; the identity ΔT = ½P·(u⁰+u) holds everywhere.
+fn check_energy<T: Real>(s: &Scenario, tol: f64) -> Result<(), TestCaseError> {
+    let Ok((club, ball, strike)) = s.build::<T>() else {
+        return Err(TestCaseError::reject("invalid"));
+    };
+    let Ok(out) = impact::solve(&club, &ball, &strike, Solver::Reduced) else {
+        return Err(TestCaseError::reject("no impact"));
+    };
+    let p = Vector3::zeros();
+    let before = budget(&club, &ball, &strike, &out, false, p);
+    let after = budget(&club, &ball, &strike, &out, true, p);
+    prop_assert!(
+        after.energy <= before.energy * (1.0 + tol),
+        "energy {} → {}",
+        before.energy,
+        after.energy
     );
     Ok(())
 }
@@ -112,6 +143,12 @@ proptest! {
 
     #[test]
     fn invariants_hold_f32_full(s in scenario()) { check_invariants::<f32>(&s, Solver::FULL, CONSERVE_F32)?; }
+
+    #[test]
+    fn energy_never_increases_with_preset_clubs(s in preset_scenario()) {
+        check_energy::<f64>(&s, CONSERVE_F64)?;
+        check_energy::<f32>(&s, CONSERVE_F32)?;
+    }
 
     #[test]
     fn full_and_reduced_agree(s in scenario()) {

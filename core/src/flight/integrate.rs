@@ -185,6 +185,9 @@ pub(crate) fn dormand_prince<T: Real, R: Rhs<T>>(
     let (safety, grow, shrink) = (lit::<T>(0.9), lit::<T>(5.0), lit::<T>(0.2));
     let eps16 = T::default_epsilon() * lit(16.0);
     loop {
+        if stats.steps.saturating_add(stats.rejected_steps) >= super::MAX_ADAPTIVE_STEPS {
+            return Err(Error::StepLimit);
+        }
         let remaining = limit - t;
         if !(remaining > T::zero()) {
             return Err(Error::TimeLimit);

@@ -69,6 +69,13 @@ pub enum Integrator<T> {
 pub const DEFAULT_TOLERANCE_F64: f64 = 4.0e-5;
 /// Default-fidelity tolerance of the adaptive integrator in `f32`.
 pub const DEFAULT_TOLERANCE_F32: f64 = 3.0e-4;
+/// Step budget of the adaptive integrator (accepted + rejected steps). A golf flight at
+/// the tightest tolerance takes a few hundred; the budget only stops absurd inputs (it
+/// bounds the run time of every flight, so firmware never hangs): [`Error::StepLimit`].
+pub const MAX_ADAPTIVE_STEPS: u32 = 100_000;
+/// Largest accepted tolerance (`rtol`, and `atol` in m, m/s, rad/s): looser than 1 the
+/// error test stops controlling anything.
+pub const MAX_TOLERANCE: f64 = 1.0;
 /// Default first trial step of the adaptive integrator (s).
 pub const DEFAULT_INITIAL_STEP_S: f64 = 0.1;
 /// Cap on the first adaptive step (s) when the ball starts in a wind profile's singular
@@ -375,9 +382,16 @@ impl<T: Real> Integrator<T> {
                 initial_step_s,
                 max_step_s,
             } => {
+                let tolerance = |x: T| {
+                    let x = positive(x, Field::Tolerance)?;
+                    if x > lit(MAX_TOLERANCE) {
+                        return Err(Error::invalid(Field::Tolerance, Reason::OutOfRange));
+                    }
+                    Ok(x)
+                };
                 let cfg = Adaptive {
-                    rtol: positive(rtol, Field::Tolerance)?,
-                    atol: positive(atol, Field::Tolerance)?,
+                    rtol: tolerance(rtol)?,
+                    atol: tolerance(atol)?,
                     initial_step: positive(initial_step_s, Field::Step)?,
                     max_step: positive_or_infinite(max_step_s, Field::Step)?,
                     refine_landing: false,

@@ -66,21 +66,16 @@ pub fn assemble_in_frame<T: Real>(
         .copy_from(&(problem.ball.velocity_mps * mb));
     b.fixed_rows_mut::<3>(9)
         .copy_from(&(problem.ball.spin_radps * ib));
-    // contact conditions along n, t1, t2
+    // contact conditions along n, t1, t2: rows Dᵀ u with D = [n t1 t2], written as one
+    // constant-offset block (no runtime row index: no bounds check at any opt-level)
+    let d = Matrix3::from_rows(&[c.normal.transpose(), t1.transpose(), t2.transpose()]);
     let target = problem.target_velocity_mps();
-    let dirs: [(Vector3<T>, T); 3] = [
-        (c.normal, c.normal.dot(&target)),
-        (*t1, T::zero()),
-        (*t2, T::zero()),
-    ];
-    for (row, (d, rhs)) in (12..N).zip(dirs) {
-        let dt = d.transpose();
-        a.fixed_view_mut::<1, 3>(row, 0).copy_from(&(-dt));
-        a.fixed_view_mut::<1, 3>(row, 3).copy_from(&(dt * rc));
-        a.fixed_view_mut::<1, 3>(row, 6).copy_from(&dt);
-        a.fixed_view_mut::<1, 3>(row, 9).copy_from(&(-(dt * rb)));
-        b[row] = rhs;
-    }
+    a.fixed_view_mut::<3, 3>(12, 0).copy_from(&(-d));
+    a.fixed_view_mut::<3, 3>(12, 3).copy_from(&(d * rc));
+    a.fixed_view_mut::<3, 3>(12, 6).copy_from(&d);
+    a.fixed_view_mut::<3, 3>(12, 9).copy_from(&(-(d * rb)));
+    b.fixed_rows_mut::<3>(12)
+        .copy_from(&Vector3::new(c.normal.dot(&target), T::zero(), T::zero()));
     (a, b)
 }
 

@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# Issue 7 in CI (called by .ci/run): the no-panic link check of the core for
+# thumbv7em-none-eabihf, its negative control, and a bounded fuzz run of each cargo-fuzz
+# target (FUZZ_SECONDS each, default 60; the corpus under fuzz/corpus/ is committed).
+# See docs/robustness.md.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+FUZZ_SECONDS=${FUZZ_SECONDS:-60}
+start=$SECONDS
+say() { printf -- '--- %s (t=%ss)\n' "$*" "$((SECONDS - start))"; }
+
+say "no-panic link: release image of the impact and flight paths, undefined panic handler"
+(cd nopanic && cargo build --release --target thumbv7em-none-eabihf)
+echo "nopanic: linked — no panic path reachable from the core's impact and flight entry points"
+
+say "negative control: one deliberate panic must fail the link"
+if (cd nopanic && cargo build --release --target thumbv7em-none-eabihf --features canary) >/tmp/nopanic-canary.log 2>&1; then
+  echo "nopanic canary linked: the check would not catch a panic" >&2
+  exit 1
+fi
+grep -q "undefined symbol: carry_core_reached_a_panic_path" /tmp/nopanic-canary.log
+echo "nopanic canary: link failed on carry_core_reached_a_panic_path, as it must"
+
+say "cargo-fuzz"
+if ! cargo fuzz --version >/dev/null 2>&1; then
+  cargo install cargo-fuzz --locked --version 0.13.2
+fi
+# libFuzzer and the sanitizer need -Z flags: the machine has one stable toolchain, so
+# RUSTC_BOOTSTRAP=1 unlocks them (docs/robustness.md).
+export RUSTC_BOOTSTRAP=1
+cd fuzz
+cargo fuzz build -O
+for target in $(cargo fuzz list); do
+  say "fuzz $target for ${FUZZ_SECONDS}s"
+  mkdir -p "corpus/$target"
+  cargo fuzz run -O "$target" "corpus/$target" -- \
+    -max_total_time="$FUZZ_SECONDS" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 2>&1 |
+    grep -E '^(#[0-9]+ +DONE|Done|stat::number_of_executed_units|stat::peak_rss_mb|SUMMARY|==[0-9]+== ERROR)|panicked' || true
+  # cargo fuzz exits non-zero on a crash; pipefail is defeated by grep above, so check:
+  if ls "artifacts/$target"/crash-* "artifacts/$target"/timeout-* "artifacts/$target"/oom-* >/dev/null 2>&1; then
+    echo "fuzz $target found a failing input:" artifacts/"$target"/* >&2
+    exit 1
+  fi
+done
+say "robustness done"

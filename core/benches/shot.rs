@@ -1,0 +1,182 @@
+//! Full-shot costs (issue 6): club delivery → strike → impact → launch metrics → flight,
+//! per precision, impact solver and integrator; cost per shot against batch size; cost
+//! against flight time per integrator.
+//!
+//! `cargo bench -p carry-core --bench shot` (short runs: 1 s warm-up, 2 s measurement);
+//! figures in docs/accuracy.md.
+use carry_core::impact::{self, Solver};
+use carry_core::real::lit;
+use carry_core::units::{deg, rpm};
+use carry_core::{
+    Ball, ClubHead, ClubSpec, Delivery, FaceLocation, FlightOutcome, Integrator, Launch, Real,
+    Scene, fly,
+};
+use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
+use std::hint::black_box;
+use std::time::Duration;
+
+/// The default shot of `carry shot`: a 45 m/s driver, slightly off-centre (5 mm up, 10 mm
+/// toe) so the gear effect gives a little sidespin.
+fn driver_shot<T: Real>() -> Option<(ClubHead<T>, Delivery<T>)> {
+    let club = ClubSpec::<T>::driver().validate().ok()?;
+    let mut delivery = Delivery::square(lit(45.0), &club);
+    delivery.location = FaceLocation {
+        height_m: lit(0.005),
+        toe_m: lit(0.01),
+    };
+    Some((club, delivery))
+}
+
+/// One full shot: everything a launch monitor computes per swing (the club head, ball and
+/// scene are session constants, validated once).
+#[inline]
+fn shot<T: Real>(
+    club: &ClubHead<T>,
+    ball: &Ball<T>,
+    delivery: &Delivery<T>,
+    scene: &Scene<T>,
+    solver: Solver,
+    integrator: &Integrator<T>,
+) -> carry_core::Result<FlightOutcome<T>> {
+    let strike = delivery.strike(club)?;
+    let out = impact::solve(club, ball, &strike, solver)?;
+    fly(ball, &out.ball, scene, integrator, None)
+}
+
+fn full_shot<T: Real>(c: &mut Criterion, label: &str) {
+    let Some((club, delivery)) = driver_shot::<T>() else {
+        return;
+    };
+    let ball = Ball::<T>::standard();
+    let scene = Scene::<T>::default();
+    let mut group = c.benchmark_group(format!("shot/{label}"));
+    let cases: [(&str, Solver, Integrator<T>); 6] = [
+        ("default", Solver::Reduced, Integrator::default()),
+        ("full_solver", Solver::FULL, Integrator::default()),
+        (
+            "dp45_1e-3",
+            Solver::Reduced,
+            Integrator::dormand_prince(lit(1e-3)),
+        ),
+        ("tight", Solver::Reduced, Integrator::tight()),
+        (
+            "rk4_0.02",
+            Solver::Reduced,
+            Integrator::Rk4 { step_s: lit(0.02) },
+        ),
+        (
+            "euler_500hz",
+            Solver::Reduced,
+            Integrator::Euler { step_s: lit(0.002) },
+        ),
+    ];
+    for (name, solver, integrator) in cases {
+        group.bench_function(name, |b| {
+            b.iter(|| {
+                shot(
+                    black_box(&club),
+                    black_box(&ball),
+                    black_box(&delivery),
+                    black_box(&scene),
+                    solver,
+                    black_box(&integrator),
+                )
+            })
+        });
+    }
+    group.finish();
+}
+
+/// Cost per shot against batch size: n different deliveries (speed, face location and
+/// path varied) per iteration, reported as throughput per shot.
+fn batch_size(c: &mut Criterion) {
+    let Some((club, base)) = driver_shot::<f64>() else {
+        return;
+    };
+    let ball = Ball::<f64>::standard();
+    let scene = Scene::<f64>::default();
+    let integrator = Integrator::<f64>::default();
+    let mut group = c.benchmark_group("shot_batch/f64_default");
+    for n in [1_usize, 16, 256, 4096] {
+        let deliveries: Vec<Delivery<f64>> = (0..n)
+            .map(|i| {
+                #[allow(clippy::cast_precision_loss)]
+                let x = (i % 64) as f64 / 64.0;
+                Delivery {
+                    club_speed_mps: 38.0 + 12.0 * x,
+                    club_path_rad: deg(4.0 * x - 2.0),
+                    location: FaceLocation {
+                        height_m: 0.01 * x - 0.005,
+                        toe_m: 0.02 - 0.04 * x,
+                    },
+                    ..base
+                }
+            })
+            .collect();
+        group.throughput(Throughput::Elements(n as u64));
+        group.bench_with_input(BenchmarkId::from_parameter(n), &deliveries, |b, ds| {
+            b.iter(|| {
+                for d in ds {
+                    let _ = black_box(shot(
+                        &club,
+                        &ball,
+                        black_box(d),
+                        &scene,
+                        Solver::Reduced,
+                        &integrator,
+                    ));
+                }
+            })
+        });
+    }
+    group.finish();
+}
+
+/// Cost of a flight against its flight time (30° launch, 3000 rpm, 10–80 m/s): fixed-step
+/// integrators grow linearly, the adaptive one sub-linearly.
+fn flight_time(c: &mut Criterion) {
+    let ball = Ball::<f64>::standard();
+    let scene = Scene::<f64>::default();
+    let methods: [(&str, Integrator<f64>); 3] = [
+        ("euler_1e-3", Integrator::Euler { step_s: 1e-3 }),
+        ("rk4_0.02", Integrator::Rk4 { step_s: 0.02 }),
+        ("dp45_default", Integrator::default()),
+    ];
+    for (name, integrator) in methods {
+        let mut group = c.benchmark_group(format!("flight_time/{name}"));
+        for speed in [10.0, 25.0, 45.0, 80.0] {
+            let Ok(motion) = (Launch {
+                ball_speed_mps: speed,
+                launch_angle_rad: deg(30.0),
+                launch_direction_rad: 0.0,
+                backspin_radps: rpm(3000.0),
+                sidespin_radps: 0.0,
+            })
+            .ball_motion() else {
+                continue;
+            };
+            let t = fly(&ball, &motion, &scene, &integrator, None).map_or(0.0, |o| o.flight_time_s);
+            group.bench_function(BenchmarkId::from_parameter(format!("{t:.2}s")), |b| {
+                b.iter(|| fly(&ball, black_box(&motion), &scene, &integrator, None))
+            });
+        }
+        group.finish();
+    }
+}
+
+fn shot_benches(c: &mut Criterion) {
+    full_shot::<f64>(c, "f64");
+    full_shot::<f32>(c, "f32");
+    batch_size(c);
+    flight_time(c);
+}
+
+criterion_group! {
+    name = benches;
+    config = Criterion::default()
+        .warm_up_time(Duration::from_secs(1))
+        .measurement_time(Duration::from_secs(2))
+        .sample_size(30);
+    targets = shot_benches
+}
+criterion_main!(benches);

@@ -1,0 +1,194 @@
+//! Fuzz the flight entry points: launch → ball motion, scene preparation (density, weather,
+//! wind), and every integrator, in f32 and f64. A success must be finite and physical.
+//!
+//! The only inputs bounded beyond validation are the *work* a flight may take: a fixed
+//! step or a maximum adaptive step below `time limit / 2e5` would take more than 2e5 steps
+//! (legitimately slow, not a bug), so the harness skips those; see docs/robustness.md.
+#![no_main]
+// `!(a < b)` is the NaN-aware test on purpose.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
+use carry_core::air::{Air, Pressure, Weather};
+use carry_core::flight::{Integrator, Recorder, Sample};
+use carry_core::real::{lit, to_f64};
+use carry_core::scene::{Effects, Scene};
+use carry_core::wind::Wind;
+use carry_core::{Ball, Error, Launch, Real, Result};
+use carry_fuzz::Bytes;
+use libfuzzer_sys::fuzz_target;
+use nalgebra::Vector3;
+
+fn v<T: Real>(a: [f64; 3]) -> Vector3<T> {
+    Vector3::new(lit(a[0]), lit(a[1]), lit(a[2]))
+}
+
+const MAX_STEPS: f64 = 2e5;
+
+fn run<T: Real>(b: &mut Bytes<'_>) -> Result<()> {
+    let ball = Ball::<T>::new(lit(b.param(0.01, 0.1)), lit(b.param(0.01, 0.05)))?;
+    let launch = Launch::<T> {
+        ball_speed_mps: lit(b.param(0.0, 150.0)),
+        launch_angle_rad: lit(b.param(-1.6, 1.6)),
+        launch_direction_rad: lit(b.param(-3.2, 3.2)),
+        backspin_radps: lit(b.param(-2200.0, 2200.0)),
+        sidespin_radps: lit(b.param(-2200.0, 2200.0)),
+    };
+    let air = match b.byte() % 3 {
+        0 => Air::Density(lit(b.param(0.0, 2.0))),
+        1 => Air::Weather(Weather {
+            temperature_c: lit(b.param(-40.0, 50.0)),
+            relative_humidity: lit(b.param(0.0, 1.0)),
+            pressure: Pressure::Pa(lit(b.param(5e4, 1.1e5))),
+        }),
+        _ => Air::Weather(Weather {
+            temperature_c: lit(b.param(-40.0, 50.0)),
+            relative_humidity: lit(b.param(0.0, 1.0)),
+            pressure: Pressure::Altitude(lit(b.param(-500.0, 5000.0))),
+        }),
+    };
+    let wind = match b.byte() % 3 {
+        0 => Wind::None,
+        1 => Wind::Uniform(v(b.vec3(-30.0, 30.0))),
+        _ => Wind::Profile {
+            reference_mps: v(b.vec3(-30.0, 30.0)),
+            reference_height_m: lit(b.param(0.5, 50.0)),
+            exponent: lit(b.param(0.0, 0.5)),
+        },
+    };
+    let time_limit = b.param(0.1, 60.0);
+    let scene = Scene::<T> {
+        effects: Effects {
+            drag: b.flag(),
+            lift: b.flag(),
+            spin_decay: b.flag(),
+        },
+        air,
+        wind,
+        landing_height_m: lit(b.param(-20.0, 40.0)),
+        time_limit_s: lit(time_limit),
+        gravity_mps2: lit(b.param(0.0, 20.0)),
+        launch_position_m: v(b.vec3(-5.0, 5.0)),
+    };
+    let min_step = time_limit / MAX_STEPS;
+    let integrator = match b.byte() % 3 {
+        0 => Integrator::Euler {
+            step_s: lit(b.param(1e-4, 0.1)),
+        },
+        1 => Integrator::Rk4 {
+            step_s: lit(b.param(1e-4, 5.0)),
+        },
+        _ => Integrator::DormandPrince {
+            rtol: lit(b.param(1e-12, 1e-2)),
+            atol: lit(b.param(1e-12, 1e-2)),
+            initial_step_s: lit(b.param(1e-4, 1.0)),
+            max_step_s: lit(b.param(1e-3, 10.0)),
+        },
+    };
+    let bounded = match integrator {
+        Integrator::Euler { step_s } | Integrator::Rk4 { step_s } => !(to_f64(step_s) < min_step),
+        Integrator::DormandPrince { max_step_s, .. } => !(to_f64(max_step_s) < min_step),
+    };
+    // Work bound 3: an updraft that grows without bound with height (a profile exponent
+    // near 1 with a vertical component) lifts the ball exponentially for the whole time
+    // limit; with a tight tolerance that is millions of correct, tiny steps.
+    let calm_enough = match wind {
+        Wind::Profile {
+            reference_mps,
+            exponent,
+            ..
+        } => to_f64(exponent) <= 0.5 && to_f64(reference_mps.y).abs() <= 5.0,
+        Wind::Uniform(w) => to_f64(w.y).abs() <= 50.0,
+        Wind::None => true,
+    };
+    // Any tolerance goes: the core rejects tolerances above 1 (an atol of 3.4e38 once
+    // accepted every step and never terminated), and the adaptive step budget
+    // (`flight::MAX_ADAPTIVE_STEPS`) bounds the work of tight ones.
+    if !bounded || !calm_enough || !time_limit.is_finite() {
+        return Ok(());
+    }
+    let motion = launch.ball_motion()?;
+    let mut buffer: heapless::Vec<Sample<T>, 32> = heapless::Vec::new();
+    let interval = b.param(1e-3, 1.0);
+    let mut recorder = if b.flag() {
+        Recorder::new(lit(interval), &mut buffer).ok()
+    } else {
+        None
+    };
+    let prepared = scene.prepare(&ball)?;
+    // Work bound 2: the drag scale ρR²/m (golf: 0.012 /m). Far above it (a 1e300 kg/m³
+    // air, a 1e-300 kg ball) the flight is stiff and the explicit integrators need
+    // ~1/(ρR²/m·V) steps: correct but unbounded work (the core has no step-count cap; see
+    // docs/robustness.md, "remaining").
+    let r = to_f64(ball.radius_m());
+    let drag_scale = to_f64(prepared.air_density_kgm3()) * r * r / to_f64(ball.mass_kg());
+    if !(drag_scale <= 1.0) {
+        return Ok(());
+    }
+    if std::env::var_os("CARRY_FUZZ_DEBUG").is_some() {
+        eprintln!("{ball:?}\n{motion:?}\n{scene:?}\n{integrator:?}");
+    }
+    let out = match prepared.fly(&motion, &integrator, recorder.as_mut()) {
+        Ok(out) => out,
+        Err(
+            Error::InvalidInput { .. }
+            | Error::NoLanding
+            | Error::TimeLimit
+            | Error::StepSizeUnderflow
+            | Error::Unstable,
+        ) => return Ok(()),
+        Err(e) => panic!("flight returned an impact error: {e:?}"),
+    };
+    let scalars = [
+        out.carry_m,
+        out.carry_x_m,
+        out.side_m,
+        out.apex_m,
+        out.apex_time_s,
+        out.flight_time_s,
+        out.landing_angle_rad,
+        out.landing_speed_mps,
+        out.landing_spin_radps,
+        out.air_density_kgm3,
+    ];
+    assert!(
+        scalars.iter().all(|x| x.is_finite()),
+        "non-finite outcome {out:?}"
+    );
+    for vec in [
+        out.landing_position_m,
+        out.landing_velocity_mps,
+        out.landing_spin_vector_radps,
+    ] {
+        assert!(
+            vec.iter().all(|x| x.is_finite()),
+            "non-finite outcome {out:?}"
+        );
+    }
+    assert!(out.carry_m >= T::zero());
+    assert!(
+        out.flight_time_s >= T::zero() && out.flight_time_s <= lit::<T>(time_limit) * lit(1.0001)
+    );
+    // (No sign check on the landing spin: an explicit step much larger than the spin-decay
+    // time scale overshoots the magnitude through zero — inaccurate, but finite, and the
+    // documented price of a too-large fixed step.)
+    if let Some(r) = recorder {
+        for s in r.samples() {
+            assert!(
+                s.position_m
+                    .iter()
+                    .chain(s.velocity_mps.iter())
+                    .all(|x| x.is_finite())
+            );
+        }
+    }
+    Ok(())
+}
+
+fuzz_target!(|data: &[u8]| {
+    let mut b = Bytes::new(data);
+    let _ = if b.flag() {
+        run::<f32>(&mut b)
+    } else {
+        run::<f64>(&mut b)
+    };
+});

@@ -1,0 +1,223 @@
+//! The no-panic link check of issue 7 (see Cargo.toml and docs/robustness.md).
+//!
+//! Every input comes through [`black_box`], so the optimiser knows nothing about it: a
+//! panic path in the core survives unless the code itself rules it out. The results go
+//! back into `black_box` so nothing is dead code. Both precisions are linked.
+#![no_std]
+#![no_main]
+
+use carry_core::air::{Air, Pressure, Weather};
+use carry_core::flight::{Integrator, Recorder, Sample, fly};
+use carry_core::impact::{self, Solver};
+use carry_core::linalg::Pivoting;
+use carry_core::scene::{Effects, Scene};
+use carry_core::wind::Wind;
+use carry_core::{
+    Ball, BallMotion, ClubMotion, ClubSpec, Delivery, FaceLocation, Launch, Real, Strike,
+};
+use core::hint::black_box;
+use nalgebra::{Matrix3, Vector3};
+
+/// An opaque value of the working precision.
+#[inline(never)]
+fn x<T: Real>(v: f64) -> T {
+    black_box(carry_core::real::lit::<T>(black_box(v)))
+}
+
+fn v3<T: Real>(a: f64, b: f64, c: f64) -> Vector3<T> {
+    Vector3::new(x(a), x(b), x(c))
+}
+
+fn club<T: Real>() -> ClubSpec<T> {
+    ClubSpec {
+        mass_kg: x(0.2),
+        inertia_kgm2: Matrix3::new(
+            x(3e-4),
+            x(1e-5),
+            x(0.0),
+            x(1e-5),
+            x(4.2e-4),
+            x(0.0),
+            x(0.0),
+            x(0.0),
+            x(2.2e-4),
+        ),
+        loft_rad: x(0.18),
+        roll_radius_m: x(0.3),
+        bulge_radius_m: x(0.3),
+        face_depth_radius_m: if black_box(false) {
+            Some(x(0.25))
+        } else {
+            None
+        },
+        cg_to_face_m: v3(0.04, 0.0, 0.0),
+        restitution: x(0.83),
+    }
+}
+
+/// Every impact entry point: validation, delivery → strike, a strike given directly, and
+/// the solvers (reduced; full with each pivoting).
+fn impact_paths<T: Real>() -> T {
+    let mut acc = T::zero();
+    let Ok(head) = club::<T>().validate() else {
+        return acc;
+    };
+    let Ok(ball) = Ball::new(x(0.04593), x(0.021336)) else {
+        return acc;
+    };
+    let delivery = Delivery {
+        club_speed_mps: x(45.0),
+        attack_angle_rad: x(0.0),
+        club_path_rad: x(0.0),
+        face_angle_rad: x(0.0),
+        dynamic_loft_rad: x(0.18),
+        lie_rad: x(0.0),
+        club_spin_radps: v3(0.0, 0.0, 0.0),
+        location: FaceLocation {
+            height_m: x(0.0),
+            toe_m: x(0.01),
+        },
+    };
+    let direct = Strike::new(
+        ClubMotion {
+            velocity_mps: v3(45.0, 0.0, 0.0),
+            spin_radps: v3(0.0, 0.0, 1.0),
+            orientation: Matrix3::identity().map(|e: T| black_box(e)),
+        },
+        BallMotion {
+            velocity_mps: v3(0.0, 0.0, 0.0),
+            spin_radps: v3(0.0, 0.0, 0.0),
+        },
+        FaceLocation {
+            height_m: x(0.0),
+            toe_m: x(0.0),
+        },
+    );
+    let strikes = [delivery.strike(&head), direct];
+    let solvers = [
+        Solver::Reduced,
+        Solver::Full(Pivoting::Equilibrated),
+        Solver::Full(Pivoting::Partial),
+        Solver::Full(Pivoting::None),
+    ];
+    for strike in strikes.iter().flatten() {
+        for solver in solvers {
+            if let Ok(out) = impact::solve(&head, &ball, strike, black_box(solver)) {
+                let l = black_box(out.launch);
+                acc += l.ball_speed_mps + l.spin_axis_rad + l.smash_factor + out.impulse_ns.x;
+                // impact → launch → flight, as a launch monitor chains them
+                let back = Launch::from_motion(&out.ball);
+                acc += back.backspin_radps;
+            }
+        }
+    }
+    acc
+}
+
+/// Every flight entry point: launch metrics → ball motion, scene preparation (density,
+/// weather by pressure and by altitude, uniform and profile wind), the three integrators,
+/// with and without a recorder.
+fn flight_paths<T: Real>() -> T {
+    let mut acc = T::zero();
+    let ball = Ball::<T>::standard();
+    let launch = Launch::from_spin_axis(x(70.0), x(0.19), x(0.0), x(280.0), x(0.05));
+    let Ok(motion) = launch.ball_motion() else {
+        return acc;
+    };
+    let air = match black_box(0_u8) {
+        0 => Air::Density(x(1.225)),
+        1 => Air::Weather(Weather {
+            temperature_c: x(20.0),
+            relative_humidity: x(0.5),
+            pressure: Pressure::Pa(x(101_325.0)),
+        }),
+        _ => Air::Weather(Weather {
+            temperature_c: x(20.0),
+            relative_humidity: x(0.5),
+            pressure: Pressure::Altitude(x(1600.0)),
+        }),
+    };
+    let wind = match black_box(0_u8) {
+        0 => Wind::None,
+        1 => Wind::Uniform(v3(3.0, 0.0, -2.0)),
+        _ => Wind::Profile {
+            reference_mps: v3(3.0, 0.0, -2.0),
+            reference_height_m: x(10.0),
+            exponent: x(1.0 / 7.0),
+        },
+    };
+    let scene = Scene {
+        effects: Effects {
+            drag: black_box(true),
+            lift: black_box(true),
+            spin_decay: black_box(true),
+        },
+        air,
+        wind,
+        landing_height_m: x(0.0),
+        time_limit_s: x(60.0),
+        gravity_mps2: x(9.80665),
+        launch_position_m: v3(0.0, 0.0, 0.0),
+    };
+    let integrators = [
+        Integrator::default(),
+        Integrator::DormandPrince {
+            rtol: x(1e-6),
+            atol: x(1e-6),
+            initial_step_s: x(0.1),
+            max_step_s: x(1.0),
+        },
+        Integrator::Rk4 { step_s: x(0.01) },
+        Integrator::Euler { step_s: x(0.001) },
+    ];
+    let mut buffer: heapless::Vec<Sample<T>, 64> = heapless::Vec::new();
+    for integrator in integrators {
+        if let Ok(out) = fly(&ball, &motion, &scene, &integrator, None) {
+            acc += black_box(out).carry_m;
+        }
+    }
+    if let Ok(mut rec) = Recorder::new(x(0.1), &mut buffer) {
+        let flown = scene
+            .prepare(&ball)
+            .and_then(|p| p.fly(&motion, &black_box(Integrator::default()), Some(&mut rec)));
+        if let Ok(out) = flown {
+            acc += out.apex_m;
+        }
+        acc += rec.samples().last().map_or(T::zero(), |s| s.time_s);
+    }
+    acc
+}
+
+#[cortex_m_rt::entry]
+fn main() -> ! {
+    // The negative control (`--features canary`): an index the optimiser cannot check, so
+    // the link must fail — proof that the check catches a reachable panic.
+    #[cfg(feature = "canary")]
+    black_box([1_u8; 4][black_box(7_usize) % black_box(8_usize)]);
+    loop {
+        black_box(impact_paths::<f32>());
+        black_box(impact_paths::<f64>());
+        black_box(flight_paths::<f32>());
+        black_box(flight_paths::<f64>());
+    }
+}
+
+#[cfg(not(feature = "diagnose"))]
+#[panic_handler]
+fn panic(_: &core::panic::PanicInfo<'_>) -> ! {
+    unsafe extern "C" {
+        /// Never defined: referencing it fails the link.
+        fn carry_core_reached_a_panic_path() -> !;
+    }
+    // SAFETY: never runs; the symbol does not exist, so an image that still calls the
+    // panic handler does not link.
+    unsafe { carry_core_reached_a_panic_path() }
+}
+
+#[cfg(feature = "diagnose")]
+#[panic_handler]
+fn panic(_: &core::panic::PanicInfo<'_>) -> ! {
+    loop {
+        core::hint::spin_loop();
+    }
+}
