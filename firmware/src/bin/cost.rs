@@ -1,0 +1,204 @@
+//! Instruction counts per operation. Run by `cost.sh`, under QEMU's exact counting plugin
+//! and `-icount shift=0`; it joins the region numbers printed here to the plugin's counts.
+//!
+//! Every operation runs on the reference driver shot (see `carry_firmware::shot`), with
+//! inputs hidden from the optimiser by `black_box`.
+#![no_std]
+#![no_main]
+
+use carry_core::flight::Integrator;
+use carry_core::impact::{self, Solver};
+use carry_core::linalg::Pivoting;
+use carry_core::real::{Real, lit, to_f64};
+use carry_core::scene::Scene;
+use carry_core::{Ball, Error};
+use carry_firmware::cost::{Ticks, insns_per_call, region};
+use carry_firmware::shot;
+use core::hint::black_box;
+use cortex_m_rt::entry;
+
+/// Counts one operation: `n` calls in one region; `f` returns a work measure (force
+/// evaluations for a flight, 0 otherwise) and the carry (m) where there is one.
+fn op(
+    ticks: &Ticks,
+    k: &mut u32,
+    name: &str,
+    n: u32,
+    f: &mut dyn FnMut() -> Result<(u32, f64), Error>,
+) {
+    let (t, last) = region(ticks, n, f);
+    let (evals, carry) = match last {
+        Some(Ok(r)) => r,
+        Some(Err(e)) => {
+            defmt::println!("note: region {=u32} failed: {}", *k, e);
+            (u32::MAX, f64::NAN)
+        }
+        None => (0, f64::NAN),
+    };
+    defmt::println!(
+        "cost region={=u32} n={=u32} ticks={=u32} approx={=u32} evals={=u32} carry={=f64} op={=str}",
+        *k,
+        n,
+        t,
+        insns_per_call(t, n),
+        evals,
+        carry,
+        name
+    );
+    *k += 1;
+}
+
+/// The impact and flight operations in precision `T`.
+fn suite<T: Real>(ticks: &Ticks, k: &mut u32, p: &str) {
+    let spec = black_box(shot::driver::<T>());
+    let delivery = black_box(shot::delivery::<T>());
+    let club = spec.validate().unwrap_or_else(|_| carry_firmware::exit(1));
+    let strike = delivery
+        .strike(&club)
+        .unwrap_or_else(|_| carry_firmware::exit(1));
+    let ball = Ball::<T>::standard();
+    let scene = black_box(Scene::<T>::default());
+    let hit = impact::solve(&club, &ball, &strike, Solver::Reduced)
+        .unwrap_or_else(|_| carry_firmware::exit(1));
+    let launch = black_box(hit.ball);
+
+    macro_rules! label {
+        ($s:literal) => {
+            if p == "f32" {
+                concat!($s, " [f32]")
+            } else {
+                concat!($s, " [f64]")
+            }
+        };
+    }
+
+    op(
+        ticks,
+        k,
+        label!("club: ClubSpec::validate"),
+        10,
+        &mut || spec.validate().map(|_| (0, f64::NAN)),
+    );
+    op(
+        ticks,
+        k,
+        label!("delivery: Delivery::strike"),
+        10,
+        &mut || delivery.strike(&club).map(|_| (0, f64::NAN)),
+    );
+    op(
+        ticks,
+        k,
+        label!("impact solve, reduced 3x3"),
+        10,
+        &mut || impact::solve(&club, &ball, &strike, Solver::Reduced).map(|_| (0, f64::NAN)),
+    );
+    op(
+        ticks,
+        k,
+        label!("impact solve, full 15x15 (equilibrated)"),
+        10,
+        &mut || impact::solve(&club, &ball, &strike, Solver::FULL).map(|_| (0, f64::NAN)),
+    );
+    op(
+        ticks,
+        k,
+        label!("impact solve, full 15x15 (partial pivoting)"),
+        10,
+        &mut || {
+            impact::solve(&club, &ball, &strike, Solver::Full(Pivoting::Partial))
+                .map(|_| (0, f64::NAN))
+        },
+    );
+
+    let mut fly = |name: &'static str, integrator: Integrator<T>| {
+        let integrator = black_box(integrator);
+        op(ticks, k, name, 1, &mut || {
+            carry_core::flight::fly(&ball, &launch, &scene, &integrator, None)
+                .map(|o| (o.stats.force_evaluations, to_f64(o.carry_m)))
+        });
+    };
+    fly(
+        label!("flight, default fidelity (DP5(4) default tol)"),
+        Integrator::default(),
+    );
+    fly(
+        label!("flight, DP5(4) tol 1e-4"),
+        Integrator::dormand_prince(lit(1e-4)),
+    );
+    fly(
+        label!("flight, DP5(4) tol 1e-6"),
+        Integrator::dormand_prince(lit(1e-6)),
+    );
+    fly(
+        label!("flight, DP5(4) tol 1e-8"),
+        Integrator::dormand_prince(lit(1e-8)),
+    );
+    fly(
+        label!("flight, RK4 step 10 ms"),
+        Integrator::Rk4 { step_s: lit(1e-2) },
+    );
+    fly(
+        label!("flight, RK4 step 1 ms"),
+        Integrator::Rk4 { step_s: lit(1e-3) },
+    );
+    fly(
+        label!("flight, Euler step 10 ms"),
+        Integrator::Euler { step_s: lit(1e-2) },
+    );
+    fly(
+        label!("flight, Euler step 1 ms"),
+        Integrator::Euler { step_s: lit(1e-3) },
+    );
+
+    let prepared = scene
+        .prepare(&ball)
+        .unwrap_or_else(|_| carry_firmware::exit(1));
+    op(ticks, k, label!("scene: Scene::prepare"), 10, &mut || {
+        scene.prepare(&ball).map(|_| (0, f64::NAN))
+    });
+    let fidelity = black_box(carry_core::shot::Fidelity::<T>::default());
+    op(
+        ticks,
+        k,
+        label!("FULL SHOT: shot::play (strike+reduced+flight, default)"),
+        1,
+        &mut || {
+            carry_core::shot::play(&club, &ball, &delivery, &prepared, &fidelity, None)
+                .map(|o| (o.flight.stats.force_evaluations, to_f64(o.flight.carry_m)))
+        },
+    );
+    let integrator = black_box(Integrator::<T>::default());
+    op(
+        ticks,
+        k,
+        label!("full shot + ClubSpec::validate + Scene::prepare"),
+        1,
+        &mut || {
+            shot::full(&spec, &delivery, Solver::Reduced, &scene, &integrator)
+                .map(|(_, f)| (f.stats.force_evaluations, to_f64(f.carry_m)))
+        },
+    );
+}
+
+#[entry]
+fn main() -> ! {
+    let cp = cortex_m::Peripherals::take().unwrap_or_else(|| carry_firmware::exit(1));
+    let ticks = Ticks::new(cp.SYST);
+    let mut k = 0;
+    // Region 0 calibrates: the loop and marker overhead of n = 10 empty calls.
+    op(
+        &ticks,
+        &mut k,
+        "empty (calibration, n = 10)",
+        10,
+        &mut || Ok((0, f64::NAN)),
+    );
+    op(&ticks, &mut k, "empty (calibration, n = 1)", 1, &mut || {
+        Ok((0, f64::NAN))
+    });
+    suite::<f32>(&ticks, &mut k, "f32");
+    suite::<f64>(&ticks, &mut k, "f64");
+    defmt::println!("reference carry {=f64} m", shot::REFERENCE_CARRY_M);
+    carry_firmware::exit_ok()
+}
