@@ -4,11 +4,12 @@
 //!
 //! `cargo bench -p carry-core --bench shot` (short runs: 1 s warm-up, 2 s measurement);
 //! figures in docs/accuracy.md.
-use carry_core::impact::{self, Solver};
+use carry_core::impact::Solver;
 use carry_core::real::lit;
+use carry_core::shot::{Fidelity, ShotOutcome, play};
 use carry_core::units::{deg, rpm};
 use carry_core::{
-    Ball, ClubHead, ClubSpec, Delivery, FaceLocation, FlightOutcome, Integrator, Launch, Real,
+    Ball, ClubHead, ClubSpec, Delivery, FaceLocation, Integrator, Launch, PreparedScene, Real,
     Scene, fly,
 };
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
@@ -27,20 +28,23 @@ fn driver_shot<T: Real>() -> Option<(ClubHead<T>, Delivery<T>)> {
     Some((club, delivery))
 }
 
-/// One full shot: everything a launch monitor computes per swing (the club head, ball and
-/// scene are session constants, validated once).
+/// One full shot: everything a launch monitor computes per swing — strike, impact, launch
+/// metrics, flight (`shot::play`; the club head, ball and scene are session constants,
+/// validated and prepared once, as in the firmware's cost figures).
 #[inline]
 fn shot<T: Real>(
     club: &ClubHead<T>,
     ball: &Ball<T>,
     delivery: &Delivery<T>,
-    scene: &Scene<T>,
+    scene: &PreparedScene<T>,
     solver: Solver,
     integrator: &Integrator<T>,
-) -> carry_core::Result<FlightOutcome<T>> {
-    let strike = delivery.strike(club)?;
-    let out = impact::solve(club, ball, &strike, solver)?;
-    fly(ball, &out.ball, scene, integrator, None)
+) -> carry_core::Result<ShotOutcome<T>> {
+    let fidelity = Fidelity {
+        solver,
+        integrator: *integrator,
+    };
+    play(club, ball, delivery, scene, &fidelity, None)
 }
 
 fn full_shot<T: Real>(c: &mut Criterion, label: &str) {
@@ -48,7 +52,9 @@ fn full_shot<T: Real>(c: &mut Criterion, label: &str) {
         return;
     };
     let ball = Ball::<T>::standard();
-    let scene = Scene::<T>::default();
+    let Ok(scene) = Scene::<T>::default().prepare(&ball) else {
+        return;
+    };
     let mut group = c.benchmark_group(format!("shot/{label}"));
     let cases: [(&str, Solver, Integrator<T>); 6] = [
         ("default", Solver::Reduced, Integrator::default()),
@@ -94,7 +100,9 @@ fn batch_size(c: &mut Criterion) {
         return;
     };
     let ball = Ball::<f64>::standard();
-    let scene = Scene::<f64>::default();
+    let Ok(scene) = Scene::<f64>::default().prepare(&ball) else {
+        return;
+    };
     let integrator = Integrator::<f64>::default();
     let mut group = c.benchmark_group("shot_batch/f64_default");
     for n in [1_usize, 16, 256, 4096] {
@@ -164,11 +172,61 @@ fn flight_time(c: &mut Criterion) {
     }
 }
 
+/// The launches of `bench/peer_opengolfcoach.py` (keep in sync): ball speed (m/s), launch
+/// angle (deg), spin (rpm); straight, standard air. One iteration flies all 12.
+const PEER_LAUNCHES: [(f64, f64, f64); 12] = [
+    (65.87976772775029, 8.744649330360067, 2257.99909553281),
+    (74.65568, 10.9, 2686.0),
+    (90.0, 12.0, 2200.0),
+    (63.0, 13.0, 3000.0),
+    (70.0, 9.2, 3655.0),
+    (53.6448, 16.3, 7097.0),
+    (59.0, 12.1, 5361.0),
+    (45.59808, 24.2, 9304.0),
+    (21.75, 36.6, 6447.0),
+    (12.0, 30.0, 4000.0),
+    (60.0, 14.0, 0.0),
+    (40.0, 80.0, 9000.0),
+];
+
+/// Flights of the peer comparison's launches at the default fidelity (f64): the
+/// compute-only figure `bench/peer_opengolfcoach.py` divides by 12.
+fn peer_launches(c: &mut Criterion) {
+    let ball = Ball::<f64>::standard();
+    let scene = Scene::<f64>::default();
+    let integrator = Integrator::<f64>::default();
+    let motions: Vec<_> = PEER_LAUNCHES
+        .iter()
+        .filter_map(|&(v, a, s)| {
+            Launch {
+                ball_speed_mps: v,
+                launch_angle_rad: deg(a),
+                launch_direction_rad: 0.0,
+                backspin_radps: rpm(s),
+                sidespin_radps: 0.0,
+            }
+            .ball_motion()
+            .ok()
+        })
+        .collect();
+    let mut group = c.benchmark_group("peer_launches");
+    group.throughput(Throughput::Elements(motions.len() as u64));
+    group.bench_function("f64_default", |b| {
+        b.iter(|| {
+            for m in &motions {
+                let _ = black_box(fly(&ball, black_box(m), &scene, &integrator, None));
+            }
+        })
+    });
+    group.finish();
+}
+
 fn shot_benches(c: &mut Criterion) {
     full_shot::<f64>(c, "f64");
     full_shot::<f32>(c, "f32");
     batch_size(c);
     flight_time(c);
+    peer_launches(c);
 }
 
 criterion_group! {

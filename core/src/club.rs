@@ -187,6 +187,7 @@ impl<T: Real> ClubSpec<T> {
             inertia_kgm2: inertia,
             inverse_inertia,
             loft_rad,
+            face_rotation: crate::geometry::rot_z(loft_rad),
             face,
             cg_to_face_m,
             restitution,
@@ -285,6 +286,8 @@ pub struct ClubHead<T: Real> {
     inertia_kgm2: Matrix3<T>,
     inverse_inertia: Matrix3<T>,
     loft_rad: T,
+    /// `R_CE = Rz(α)`, computed once (no trigonometry in the impact solve).
+    face_rotation: Matrix3<T>,
     face: FaceShape<T>,
     cg_to_face_m: Vector3<T>,
     restitution: T,
@@ -310,6 +313,11 @@ impl<T: Real> ClubHead<T> {
     #[must_use]
     pub fn loft_rad(&self) -> T {
         self.loft_rad
+    }
+    /// Face frame → club frame, `R_CE = Rz(α)`.
+    #[must_use]
+    pub fn face_rotation(&self) -> &Matrix3<T> {
+        &self.face_rotation
     }
     /// The face ellipsoid.
     #[must_use]

@@ -13,7 +13,6 @@ use crate::club::ClubHead;
 use crate::delivery::Strike;
 use crate::error::Result;
 use crate::face::contact;
-use crate::geometry::rot_z;
 use crate::real::Real;
 use nalgebra::{Matrix3, Vector3};
 
@@ -41,7 +40,7 @@ impl<T: Real> Contact<T> {
     pub fn new(club: &ClubHead<T>, ball: &Ball<T>, strike: &Strike<T>) -> Result<Self> {
         let on_face = contact(club.face(), club.cg_to_face_m(), strike.location())?;
         let r = &strike.club().orientation;
-        let q = r * rot_z(club.loft_rad());
+        let q = r * club.face_rotation();
         let normal = q * on_face.normal;
         let rt = r.transpose();
         Ok(Self {

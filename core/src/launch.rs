@@ -46,9 +46,15 @@ impl<T: Real> LaunchMetrics<T> {
         let v = &motion.velocity_mps;
         let w = &motion.spin_radps;
         let speed = v.norm();
-        let horizontal = v.x.hypot(v.z);
+        // sin ψ, cos ψ from the components: no trigonometry (f32 sin/cos run in soft f64 on
+        // a Cortex-M4F), and exact where atan2 then sin_cos would round twice.
+        let horizontal = (v.x * v.x + v.z * v.z).sqrt();
         let direction = v.z.atan2(v.x);
-        let (sin_psi, cos_psi) = direction.sin_cos();
+        let (sin_psi, cos_psi) = if horizontal > T::zero() {
+            (v.z / horizontal, v.x / horizontal)
+        } else {
+            (T::zero(), T::one())
+        };
         let backspin = -w.x * sin_psi + w.z * cos_psi;
         let sidespin = -w.y;
         Self {

@@ -26,7 +26,14 @@ pub enum Pivoting {
 /// Solves `A x = b` in place by Gaussian elimination (Golub & Van Loan, Alg. 3.4.1),
 /// overwriting `a` with its reduced form.
 ///
-/// A pivot `|u_kk| ≤ N·ε·max|A|` (after equilibration, when chosen) is treated as zero.
+/// Column-oriented on nalgebra's column-major storage: the updates run down contiguous
+/// columns, and a column whose entry in the pivot row is zero is skipped whole (the impact
+/// matrix is sparse: most pivot rows touch two or three columns). A pivot
+/// `|u_kk| ≤ N·ε·max|A|` (after equilibration, when chosen) is treated as zero.
+///
+/// Every access goes through slices, iterators, `get` and `split_at_mut_checked`: the
+/// routine has no panic path by construction, which the no-panic link check (`nopanic/`)
+/// relies on.
 ///
 /// # Errors
 /// [`Error::Singular`] when a pivot falls below the threshold or the result is not finite.
@@ -35,117 +42,127 @@ pub fn solve_gauss<T: Real, const N: usize>(
     b: &SVector<T, N>,
     pivoting: Pivoting,
 ) -> Result<SVector<T, N>> {
-    // Every element access below goes through `get`/`get_mut` (never `a[(i, j)]`, whose
-    // bounds check the optimiser does not always remove): the routine has no panic path
-    // by construction, which the no-panic link check (nopanic/, issue 7) relies on.
     let mut x = *b;
-    if pivoting == Pivoting::Equilibrated {
-        for i in 0..N {
-            let mut m = T::zero();
-            for j in 0..N {
-                let v = at(a, i, j).abs();
-                if v > m {
-                    m = v;
-                }
-            }
-            if !(m > T::zero()) {
-                return Err(Error::Singular);
-            }
-            let inv = T::one() / m;
-            for j in 0..N {
-                let v = at(a, i, j) * inv;
-                set(a, i, j, v);
-            }
-            let xi = at_v(&x, i) * inv;
-            set_v(&mut x, i, xi);
-        }
-    }
-    let tiny = lit::<T>(N as f64) * T::default_epsilon() * a.amax();
+    let xs = x.as_mut_slice();
+    let cols = a.as_mut_slice();
+    // max|A|: after row equilibration every row's largest entry is 1 (to rounding)
+    let largest = if pivoting == Pivoting::Equilibrated {
+        equilibrate_rows::<T, N>(cols, xs)?;
+        T::one()
+    } else {
+        cols.iter()
+            .fold(T::zero(), |m, v| if v.abs() > m { v.abs() } else { m })
+    };
+    let tiny = lit::<T>(N as f64) * T::default_epsilon() * largest;
     for k in 0..N {
-        let mut p = k;
+        // columns 0..=k on the left (column k last), the trailing columns on the right
+        let (left, right) = cols
+            .split_at_mut_checked((k + 1) * N)
+            .ok_or(Error::Singular)?;
+        let col_k = left.get_mut(k * N..).ok_or(Error::Singular)?;
+        let below = col_k.get(k..).unwrap_or(&[]);
+        let mut p = 0;
+        let mut best = below.first().map_or(T::zero(), |v| v.abs());
         if pivoting != Pivoting::None {
-            let mut best = at(a, k, k).abs();
-            for i in k + 1..N {
-                let v = at(a, i, k).abs();
-                if v > best {
-                    best = v;
+            for (i, v) in below.iter().enumerate().skip(1) {
+                if v.abs() > best {
+                    best = v.abs();
                     p = i;
                 }
             }
         }
-        let pivot = at(a, p, k);
-        if !(pivot.abs() > tiny) {
+        if !(best > tiny) {
             return Err(Error::Singular);
         }
-        if p != k {
-            for j in 0..N {
-                let (u, v) = (at(a, p, j), at(a, k, j));
-                set(a, p, j, v);
-                set(a, k, j, u);
+        if p != 0 {
+            let p = k + p;
+            swap(col_k, k, p);
+            for col in right.chunks_exact_mut(N) {
+                swap(col, k, p);
             }
-            let (u, v) = (at_v(&x, p), at_v(&x, k));
-            set_v(&mut x, p, v);
-            set_v(&mut x, k, u);
+            swap(xs, k, p);
         }
+        let pivot = col_k.get(k).copied().ok_or(Error::Singular)?;
+        // multipliers l_ik = a_ik / a_kk, stored in place below the pivot
         let inv = T::one() / pivot;
-        let xk = at_v(&x, k);
-        for i in k + 1..N {
-            let f = at(a, i, k) * inv;
-            if f == T::zero() {
-                continue; // the impact matrix is sparse: skip empty rows
-            }
-            set(a, i, k, T::zero());
-            for j in k + 1..N {
-                let akj = at(a, k, j);
-                if let Some(aij) = a.get_mut((i, j)) {
-                    *aij -= f * akj;
-                }
-            }
-            if let Some(xi) = x.get_mut(i) {
-                *xi -= f * xk;
+        let multipliers = col_k.get_mut(k + 1..).unwrap_or(&mut []);
+        for l in multipliers.iter_mut() {
+            *l *= inv;
+        }
+        let multipliers = &*multipliers;
+        for col in right.chunks_exact_mut(N) {
+            let a_kj = col.get(k).copied().unwrap_or_else(T::zero);
+            if a_kj != T::zero() {
+                eliminate(col.get_mut(k + 1..).unwrap_or(&mut []), multipliers, a_kj);
             }
         }
-    }
-    for k in (0..N).rev() {
-        let mut s = at_v(&x, k);
-        for j in k + 1..N {
-            s -= at(a, k, j) * at_v(&x, j);
+        let x_k = xs.get(k).copied().unwrap_or_else(T::zero);
+        if x_k != T::zero() {
+            eliminate(xs.get_mut(k + 1..).unwrap_or(&mut []), multipliers, x_k);
         }
-        set_v(&mut x, k, s / at(a, k, k));
     }
-    if x.iter().all(|v| v.is_finite()) {
+    // back substitution, column by column: x_k = x_k / u_kk, then x_i −= u_ik x_k (i < k)
+    for (k, col) in cols.chunks_exact(N).enumerate().rev() {
+        let (above, rest) = xs.split_at_mut_checked(k).ok_or(Error::Singular)?;
+        let (Some(x_k), Some(u_kk)) = (rest.first_mut(), col.get(k)) else {
+            return Err(Error::Singular);
+        };
+        *x_k /= *u_kk;
+        let x_k = *x_k;
+        if x_k != T::zero() {
+            eliminate(above, col, x_k);
+        }
+    }
+    if xs.iter().all(|v| v.is_finite()) {
         Ok(x)
     } else {
         Err(Error::Singular)
     }
 }
 
-/// `a[(i, j)]` without a panic path (zero out of range, which the callers never ask for).
+/// `target_i −= l_i · s` (a contiguous axpy).
 #[inline(always)]
-fn at<T: Real, const N: usize>(a: &SMatrix<T, N, N>, i: usize, j: usize) -> T {
-    a.get((i, j)).copied().unwrap_or_else(T::zero)
-}
-
-/// `a[(i, j)] = v` without a panic path.
-#[inline(always)]
-fn set<T: Real, const N: usize>(a: &mut SMatrix<T, N, N>, i: usize, j: usize, v: T) {
-    if let Some(e) = a.get_mut((i, j)) {
-        *e = v;
+fn eliminate<T: Real>(target: &mut [T], l: &[T], s: T) {
+    for (t, l) in target.iter_mut().zip(l) {
+        *t -= *l * s;
     }
 }
 
-/// `x[i]` without a panic path.
+/// Swaps entries `k < p` of a slice; out-of-range indices leave it unchanged.
 #[inline(always)]
-fn at_v<T: Real, const N: usize>(x: &SVector<T, N>, i: usize) -> T {
-    x.get(i).copied().unwrap_or_else(T::zero)
+fn swap<T: Real>(v: &mut [T], k: usize, p: usize) {
+    if let Some((lo, hi)) = v.split_at_mut_checked(p) {
+        if let (Some(a), Some(b)) = (lo.get_mut(k), hi.first_mut()) {
+            core::mem::swap(a, b);
+        }
+    }
 }
 
-/// `x[i] = v` without a panic path.
-#[inline(always)]
-fn set_v<T: Real, const N: usize>(x: &mut SVector<T, N>, i: usize, v: T) {
-    if let Some(e) = x.get_mut(i) {
-        *e = v;
+/// Scales every row of the column-major `cols` (and `x`) to unit max-norm.
+fn equilibrate_rows<T: Real, const N: usize>(cols: &mut [T], x: &mut [T]) -> Result<()> {
+    let mut scale = [T::zero(); N];
+    for col in cols.chunks_exact(N) {
+        for (s, v) in scale.iter_mut().zip(col) {
+            if v.abs() > *s {
+                *s = v.abs();
+            }
+        }
     }
+    for s in &mut scale {
+        if !(*s > T::zero()) {
+            return Err(Error::Singular);
+        }
+        *s = T::one() / *s;
+    }
+    for col in cols.chunks_exact_mut(N) {
+        for (v, s) in col.iter_mut().zip(&scale) {
+            *v *= *s;
+        }
+    }
+    for (v, s) in x.iter_mut().zip(&scale) {
+        *v *= *s;
+    }
+    Ok(())
 }
 
 /// Solves `K x = b` for a symmetric positive definite 3×3 `K` by LDLᵀ.

@@ -50,10 +50,10 @@ unsafe fn DefaultHandler(irqn: i16) -> ! {
     exit(EXIT_HARDFAULT)
 }
 
-// The panic handler. The normal build reports the location and exits with 101. The
-// `no-panic` build (issue 7) instead calls a function that no object defines: if any
-// panic is reachable from what the binary links, the link fails and names the culprit.
-#[cfg(not(feature = "no-panic"))]
+// The panic handler reports the location and exits with 101. That the core's impact and
+// flight paths cannot reach it is proven separately by `nopanic/` (its handler calls an
+// undefined symbol, so a reachable panic fails the link; docs/robustness.md). This image
+// also links defmt, semihosting and the test harness, whose own panic paths are not ours.
 #[panic_handler]
 fn panic(info: &core::panic::PanicInfo) -> ! {
     match info.location() {
@@ -61,15 +61,4 @@ fn panic(info: &core::panic::PanicInfo) -> ! {
         None => defmt::error!("panicked"),
     }
     exit(EXIT_PANIC)
-}
-
-#[cfg(feature = "no-panic")]
-#[panic_handler]
-fn panic(_info: &core::panic::PanicInfo) -> ! {
-    unsafe extern "Rust" {
-        /// Deliberately undefined: a reachable panic becomes a link error.
-        fn carry_firmware_a_panic_is_reachable() -> !;
-    }
-    // SAFETY: never linked; the call only exists to fail the link.
-    unsafe { carry_firmware_a_panic_is_reachable() }
 }
