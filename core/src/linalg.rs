@@ -131,10 +131,10 @@ fn eliminate<T: Real>(target: &mut [T], l: &[T], s: T) {
 /// Swaps entries `k < p` of a slice; out-of-range indices leave it unchanged.
 #[inline(always)]
 fn swap<T: Real>(v: &mut [T], k: usize, p: usize) {
-    if let Some((lo, hi)) = v.split_at_mut_checked(p) {
-        if let (Some(a), Some(b)) = (lo.get_mut(k), hi.first_mut()) {
-            core::mem::swap(a, b);
-        }
+    if let Some((lo, hi)) = v.split_at_mut_checked(p)
+        && let (Some(a), Some(b)) = (lo.get_mut(k), hi.first_mut())
+    {
+        core::mem::swap(a, b);
     }
 }
 
