@@ -168,6 +168,27 @@ fn suite<T: Real>(ticks: &Ticks, k: &mut u32, p: &str) {
                 .map(|o| (o.flight.stats.force_evaluations, to_f64(o.flight.carry_m)))
         },
     );
+    // A launch monitor's everyday delivery: every angle non-zero, an off-centre strike
+    // (the reference delivery's zero angles make the five sin/cos of `strike` trivial).
+    let mut everyday = delivery;
+    everyday.attack_angle_rad = carry_core::units::deg(lit(-1.5));
+    everyday.club_path_rad = carry_core::units::deg(lit(2.5));
+    everyday.face_angle_rad = carry_core::units::deg(lit(1.2));
+    everyday.dynamic_loft_rad = carry_core::units::deg(lit(12.0));
+    everyday.lie_rad = carry_core::units::deg(lit(-0.8));
+    everyday.location.toe_m = lit(0.008);
+    everyday.location.height_m = lit(0.004);
+    let everyday = black_box(everyday);
+    op(
+        ticks,
+        k,
+        label!("FULL SHOT, everyday delivery (all angles non-zero)"),
+        1,
+        &mut || {
+            carry_core::shot::play(&club, &ball, &everyday, &prepared, &fidelity, None)
+                .map(|o| (o.flight.stats.force_evaluations, to_f64(o.flight.carry_m)))
+        },
+    );
     let integrator = black_box(Integrator::<T>::default());
     op(
         ticks,
