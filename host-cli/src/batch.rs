@@ -247,30 +247,35 @@ pub type Opened = (csv::Reader<Box<dyn Read>>, Columns, Option<u64>);
 /// An unreadable file or a bad header.
 pub fn reader(input: &PathBuf, mode: Mode) -> Result<Opened, InputError> {
     let (file, len) = open(input)?;
+    let (rdr, cols) = csv_reader(file, &input.display().to_string(), mode)?;
+    Ok((rdr, cols, len))
+}
+
+/// A CSV reader over any byte source named `name` (for messages), and its column map.
+///
+/// # Errors
+/// A missing or bad header line.
+pub fn csv_reader<R: Read>(
+    source: R,
+    name: &str,
+    mode: Mode,
+) -> Result<(csv::Reader<R>, Columns), InputError> {
     let mut rdr = csv::ReaderBuilder::new()
         .has_headers(true)
         .flexible(true)
         .trim(csv::Trim::All)
         .comment(Some(b'#'))
         .buffer_capacity(1 << 20)
-        .from_reader(file);
+        .from_reader(source);
     let header = rdr
         .byte_headers()
-        .map_err(|e| {
-            InputError::new(
-                "input",
-                format!("{}: cannot read the header: {e}", input.display()),
-            )
-        })?
+        .map_err(|e| InputError::new("input", format!("{name}: cannot read the header: {e}")))?
         .clone();
     if header.is_empty() || (header.len() == 1 && header.get(0).is_some_and(<[u8]>::is_empty)) {
-        return Err(InputError::new(
-            "input",
-            format!("{}: no header line", input.display()),
-        ));
+        return Err(InputError::new("input", format!("{name}: no header line")));
     }
     let cols = Columns::from_header(&header, mode)?;
-    Ok((rdr, cols, len))
+    Ok((rdr, cols))
 }
 
 /// Runs a batch.
@@ -307,6 +312,40 @@ fn run_in_pool(job: &Job) -> Result<(), Failure> {
     };
     let stdout = std::io::stdout();
     let mut out = std::io::BufWriter::with_capacity(1 << 20, stdout.lock());
+    let (rows, errors) = stream(job, &mut rdr, &cols, &mut out, progress.as_ref())?;
+    out.flush()?;
+    if let Some(bar) = progress {
+        bar.finish_and_clear();
+    }
+    if errors > 0 {
+        let _ = writeln!(
+            std::io::stderr(),
+            "carry: {errors} of {rows} rows had errors (see their error field)"
+        );
+    }
+    Ok(())
+}
+
+/// Runs a batch over CSV `input` bytes into `out` (no files, no threads of its own beyond
+/// rayon's, no progress bar): the same parsing and formatting as `carry batch`, for fuzzing
+/// and tests. Returns (rows, error rows).
+///
+/// # Errors
+/// A bad header (status 2 in the CLI), or a write error.
+pub fn run_bytes(job: &Job, input: &[u8], out: &mut Vec<u8>) -> Result<(u64, u64), Failure> {
+    let (mut rdr, cols) = csv_reader(input, "input", job.mode)?;
+    stream(job, &mut rdr, &cols, out, None)
+}
+
+/// Reads every record of `rdr`, computes and formats them in parallel chunks, writes the
+/// header and the rows to `out` in input order. Returns (rows, error rows).
+fn stream<R: Read, W: Write>(
+    job: &Job,
+    rdr: &mut csv::Reader<R>,
+    cols: &Columns,
+    out: &mut W,
+    progress: Option<&indicatif::ProgressBar>,
+) -> Result<(u64, u64), Failure> {
     if !job.json {
         let mut header = Vec::new();
         let prefix: &[&str] = if cols.label.is_some() {
@@ -344,7 +383,7 @@ fn run_in_pool(job: &Job) -> Result<(), Failure> {
                 let mut floats = Floats::default();
                 let mut failed = 0;
                 for rec in piece {
-                    failed += u64::from(process(job, &cols, rec, &mut floats, buf));
+                    failed += u64::from(process(job, cols, rec, &mut floats, buf));
                 }
                 failed
             })
@@ -354,7 +393,7 @@ fn run_in_pool(job: &Job) -> Result<(), Failure> {
             out.write_all(buf)?;
         }
         rows += n as u64;
-        if let Some(bar) = &progress {
+        if let Some(bar) = progress {
             bar.set_position(rdr.position().byte());
         }
         if let Some(e) = read_error {
@@ -387,15 +426,5 @@ fn run_in_pool(job: &Job) -> Result<(), Failure> {
             break;
         }
     }
-    out.flush()?;
-    if let Some(bar) = progress {
-        bar.finish_and_clear();
-    }
-    if errors > 0 {
-        let _ = writeln!(
-            std::io::stderr(),
-            "carry: {errors} of {rows} rows had errors (see their error field)"
-        );
-    }
-    Ok(())
+    Ok((rows, errors))
 }
