@@ -33,12 +33,19 @@ cargo fuzz build -O
 for target in $(cargo fuzz list); do
   say "fuzz $target for ${FUZZ_SECONDS}s"
   mkdir -p "corpus/$target"
+  log="artifacts/$target.log"
+  mkdir -p artifacts
+  set +e
   cargo fuzz run -O "$target" "corpus/$target" -- \
-    -max_total_time="$FUZZ_SECONDS" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 2>&1 |
-    grep -E '^(#[0-9]+ +DONE|Done|stat::number_of_executed_units|stat::peak_rss_mb|SUMMARY|==[0-9]+== ERROR)|panicked' || true
-  # cargo fuzz exits non-zero on a crash; pipefail is defeated by grep above, so check:
-  if ls "artifacts/$target"/crash-* "artifacts/$target"/timeout-* "artifacts/$target"/oom-* >/dev/null 2>&1; then
-    echo "fuzz $target found a failing input:" artifacts/"$target"/* >&2
+    -max_total_time="$FUZZ_SECONDS" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 >"$log" 2>&1
+  rc=$?
+  set -e
+  grep -E '^(#[0-9]+ +DONE|Done|stat::number_of_executed_units|stat::peak_rss_mb|SUMMARY|==[0-9]+== ERROR)|panicked' "$log" || true
+  # libFuzzer exits non-zero on a crash, timeout or OOM and leaves the input in artifacts/.
+  if [ "$rc" != 0 ] || [ -n "$(find "artifacts/$target" -type f \( -name 'crash-*' -o -name 'timeout-*' -o -name 'oom-*' \) 2>/dev/null)" ]; then
+    echo "fuzz $target failed (exit $rc); last lines and the failing input:" >&2
+    tail -n 40 "$log" >&2
+    find "artifacts/$target" -type f >&2 2>/dev/null || true
     exit 1
   fi
 done

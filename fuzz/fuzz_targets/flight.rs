@@ -134,6 +134,7 @@ fn run<T: Real>(b: &mut Bytes<'_>) -> Result<()> {
             | Error::NoLanding
             | Error::TimeLimit
             | Error::StepSizeUnderflow
+            | Error::StepLimit
             | Error::Unstable,
         ) => return Ok(()),
         Err(e) => panic!("flight returned an impact error: {e:?}"),
