@@ -8,7 +8,7 @@
 use crate::ball::BallMotion;
 use crate::club::ClubHead;
 use crate::error::{Error, Field, Reason, Result};
-use crate::geometry::{rot_x, rot_y, rot_z, rotation_defect};
+use crate::geometry::{rot_x, rot_y, rot_z, rotation_defect, sin_cos};
 use crate::real::Real;
 use crate::validate::{finite, finite_matrix, finite_vector, non_negative};
 use nalgebra::{Matrix3, Vector3};
@@ -113,8 +113,8 @@ impl<T: Real> Delivery<T> {
         let loft = finite(self.dynamic_loft_rad, Field::DynamicLoft)?;
         let lie = finite(self.lie_rad, Field::Lie)?;
         let spin = finite_vector(&self.club_spin_radps, Field::ClubSpin)?;
-        let (sa, ca) = attack.sin_cos();
-        let (sp, cp) = path.sin_cos();
+        let (sa, ca) = sin_cos(attack);
+        let (sp, cp) = sin_cos(path);
         let velocity = Vector3::new(ca * cp, sa, ca * sp) * v;
         let orientation = rot_y(-face) * rot_z(loft - club.loft_rad()) * rot_x(lie);
         Strike::new(

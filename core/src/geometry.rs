@@ -1,12 +1,43 @@
 //! Rotations and small vector helpers (PHYSICS.md conventions: active rotations).
 
-use crate::real::Real;
+use crate::real::{Real, lit};
 use nalgebra::{Matrix3, Vector3};
+
+/// `(sin x, cos x)`.
+///
+/// In single precision and for `|x| ≤ π/4` (every delivery and launch angle in practice) it
+/// evaluates Cephes' single-precision minimax polynomials (S. L. Moshier, Cephes Math
+/// Library, `sinf.c`/`cosf.c`; about 1 ulp on that interval) in f32: `libm`'s `sincosf`
+/// evaluates its kernel in f64, which a Cortex-M4F does in software (~2,000 instructions a
+/// call against ~20). In double precision, or for larger angles, it is `libm`'s `sin_cos`.
+/// Deterministic either way: the same bits on every target.
+#[inline]
+#[must_use]
+pub fn sin_cos<T: Real>(x: T) -> (T, T) {
+    let single = T::default_epsilon() > lit(1e-10);
+    if single && x.abs() <= T::frac_pi_4() {
+        let z = x * x;
+        let sin = ((lit::<T>(-1.951_529_589_1e-4) * z + lit(8.332_160_873_6e-3)) * z
+            - lit(1.666_665_461_1e-1))
+            * z
+            * x
+            + x;
+        let cos = ((lit::<T>(2.443_315_711_809_948e-5) * z - lit(1.388_731_625_493_765e-3)) * z
+            + lit(4.166_664_568_298_827e-2))
+            * z
+            * z
+            - lit::<T>(0.5) * z
+            + T::one();
+        (sin, cos)
+    } else {
+        x.sin_cos()
+    }
+}
 
 /// `Rx(θ)`: turns +Y towards +Z.
 #[must_use]
 pub fn rot_x<T: Real>(theta: T) -> Matrix3<T> {
-    let (s, c) = theta.sin_cos();
+    let (s, c) = sin_cos(theta);
     let (o, z) = (T::one(), T::zero());
     Matrix3::new(o, z, z, z, c, -s, z, s, c)
 }
@@ -14,7 +45,7 @@ pub fn rot_x<T: Real>(theta: T) -> Matrix3<T> {
 /// `Ry(θ)`: turns +Z towards +X.
 #[must_use]
 pub fn rot_y<T: Real>(theta: T) -> Matrix3<T> {
-    let (s, c) = theta.sin_cos();
+    let (s, c) = sin_cos(theta);
     let (o, z) = (T::one(), T::zero());
     Matrix3::new(c, z, s, z, o, z, -s, z, c)
 }
@@ -22,7 +53,7 @@ pub fn rot_y<T: Real>(theta: T) -> Matrix3<T> {
 /// `Rz(θ)`: turns +X towards +Y.
 #[must_use]
 pub fn rot_z<T: Real>(theta: T) -> Matrix3<T> {
-    let (s, c) = theta.sin_cos();
+    let (s, c) = sin_cos(theta);
     let (o, z) = (T::one(), T::zero());
     Matrix3::new(c, -s, z, s, c, z, z, z, o)
 }
@@ -76,6 +107,28 @@ mod tests {
         assert!((rot_z(q) * x - y).norm() < 1e-15);
         assert!((rot_y(q) * z - x).norm() < 1e-15);
         assert!((rot_x(q) * y - z).norm() < 1e-15);
+    }
+
+    #[test]
+    fn single_precision_sin_cos_is_within_two_ulp() {
+        let n = 20_000;
+        let mut worst = 0.0_f64;
+        for i in 0..=n {
+            let x = -core::f64::consts::FRAC_PI_4
+                + core::f64::consts::FRAC_PI_2 * f64::from(i) / f64::from(n);
+            let xf = x as f32;
+            let (s, c) = sin_cos(xf);
+            let (se, ce) = f64::from(xf).sin_cos();
+            worst = worst
+                .max((f64::from(s) - se).abs())
+                .max((f64::from(c) - ce).abs());
+        }
+        // f32 ulp at 1 is 1.19e-7: within two ulp of the exact value everywhere on [−π/4, π/4]
+        assert!(worst <= 2.0 * f64::from(f32::EPSILON), "worst {worst:e}");
+        assert!(worst > 0.0, "compared against f64, not itself");
+        // outside the interval and in f64: libm
+        assert_eq!(sin_cos(1.0_f32), 1.0_f32.sin_cos());
+        assert_eq!(sin_cos(0.3_f64), 0.3_f64.sin_cos());
     }
 
     #[test]

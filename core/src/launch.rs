@@ -13,6 +13,7 @@
 
 use crate::ball::BallMotion;
 use crate::error::{Field, Result};
+use crate::geometry::sin_cos;
 use crate::real::Real;
 use crate::validate::{finite, non_negative};
 use nalgebra::Vector3;
@@ -101,7 +102,7 @@ impl<T: Real> Launch<T> {
         spin_radps: T,
         spin_axis_rad: T,
     ) -> Self {
-        let (s, c) = spin_axis_rad.sin_cos();
+        let (s, c) = sin_cos(spin_axis_rad);
         Self {
             ball_speed_mps,
             launch_angle_rad,
@@ -132,8 +133,8 @@ impl<T: Real> Launch<T> {
     /// [`crate::Error::InvalidInput`] for a non-finite value or a negative ball speed.
     pub fn ball_motion(&self) -> Result<BallMotion<T>> {
         let speed = non_negative(self.ball_speed_mps, Field::BallSpeed)?;
-        let (st, ct) = finite(self.launch_angle_rad, Field::LaunchAngle)?.sin_cos();
-        let (sp, cp) = finite(self.launch_direction_rad, Field::LaunchDirection)?.sin_cos();
+        let (st, ct) = sin_cos(finite(self.launch_angle_rad, Field::LaunchAngle)?);
+        let (sp, cp) = sin_cos(finite(self.launch_direction_rad, Field::LaunchDirection)?);
         let back = finite(self.backspin_radps, Field::Backspin)?;
         let side = finite(self.sidespin_radps, Field::Sidespin)?;
         Ok(BallMotion {
