@@ -3,13 +3,12 @@
 //! (runtime branches vs compile-time monomorphised switches).
 //!
 //! `cargo bench -p carry-core --bench flight`; figures in docs/flight.md.
-use carry_core::air::{Air, Pressure, Weather};
 use carry_core::flight::bench::{WIND_FIELD, WIND_NONE, fly_switched};
 use carry_core::real::lit;
+use carry_core::scene::effect_ladder;
 use carry_core::units::{deg, rpm};
-use carry_core::{Ball, BallMotion, Effects, Integrator, Launch, Real, Scene, Wind, fly};
+use carry_core::{Ball, BallMotion, Integrator, Launch, Real, Scene, fly};
 use criterion::{Criterion, criterion_group, criterion_main};
-use nalgebra::Vector3;
 use std::hint::black_box;
 use std::time::Duration;
 
@@ -26,53 +25,6 @@ fn driver<T: Real>() -> BallMotion<T> {
     .unwrap_or_default()
 }
 
-/// The effect ladder: each scene adds one effect to the previous.
-fn ladder<T: Real>() -> [(&'static str, Scene<T>); 6] {
-    let base = Scene {
-        effects: Effects::GRAVITY_ONLY,
-        ..Scene::default()
-    };
-    let drag = Scene {
-        effects: Effects {
-            drag: true,
-            ..Effects::GRAVITY_ONLY
-        },
-        ..base
-    };
-    let lift = Scene {
-        effects: Effects {
-            drag: true,
-            lift: true,
-            spin_decay: false,
-        },
-        ..base
-    };
-    let decay = Scene {
-        effects: Effects::ALL,
-        ..base
-    };
-    let profile = Scene {
-        wind: Wind::profile(Vector3::new(lit(-5.0), T::zero(), lit(2.0))),
-        ..decay
-    };
-    let weather = Scene {
-        air: Air::Weather(Weather {
-            temperature_c: lit(28.0),
-            relative_humidity: lit(0.6),
-            pressure: Pressure::Altitude(lit(300.0)),
-        }),
-        ..profile
-    };
-    [
-        ("1_gravity", base),
-        ("2_drag", drag),
-        ("3_lift", lift),
-        ("4_spin_decay", decay),
-        ("5_wind_profile", profile),
-        ("6_weather", weather),
-    ]
-}
-
 fn effects<T: Real>(c: &mut Criterion, label: &str) {
     let ball = Ball::<T>::standard();
     let launch = driver::<T>();
@@ -84,7 +36,7 @@ fn effects<T: Real>(c: &mut Criterion, label: &str) {
         ("default", Integrator::default()),
     ] {
         let mut group = configure_group(c, &format!("flight/effects/{label}/{name}"));
-        for (rung, scene) in ladder::<T>() {
+        for (rung, scene) in effect_ladder::<T>() {
             group.bench_function(rung, |b| {
                 b.iter(|| {
                     fly(
@@ -146,7 +98,7 @@ fn mechanism(c: &mut Criterion) {
     let ball = Ball::<f64>::standard();
     let launch = driver::<f64>();
     let integrator = Integrator::<f64>::default();
-    let [(_, gravity), _, _, (_, full), (_, profile), _] = ladder::<f64>();
+    let [(_, gravity), _, _, (_, full), (_, profile), _] = effect_ladder::<f64>();
     let (Ok(gravity), Ok(full), Ok(profile)) = (
         gravity.prepare(&ball),
         full.prepare(&ball),

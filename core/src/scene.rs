@@ -206,6 +206,60 @@ impl<T: Real> PreparedScene<T> {
     }
 }
 
+/// The per-effect cost ladder: six scenes, each adding one effect to the one before —
+/// gravity only → + drag → + lift → + spin decay → + wind profile ((−5, 0, 2) m/s at the
+/// 10 m reference height: into the face and left to right; power law 1/7) → + weather
+/// (28 °C, 60 % humidity, 300 m altitude). Used by the
+/// criterion benchmark (`benches/flight.rs`) and the evaluation-count table of
+/// docs/flight.md, so both measure the same scenes.
+#[must_use]
+pub fn effect_ladder<T: Real>() -> [(&'static str, Scene<T>); 6] {
+    use crate::air::{Pressure, Weather};
+    let gravity = Scene {
+        effects: Effects::GRAVITY_ONLY,
+        ..Scene::default()
+    };
+    let drag = Scene {
+        effects: Effects {
+            drag: true,
+            ..Effects::GRAVITY_ONLY
+        },
+        ..gravity
+    };
+    let lift = Scene {
+        effects: Effects {
+            drag: true,
+            lift: true,
+            spin_decay: false,
+        },
+        ..gravity
+    };
+    let decay = Scene {
+        effects: Effects::ALL,
+        ..gravity
+    };
+    let profile = Scene {
+        wind: Wind::profile(Vector3::new(lit(-5.0), T::zero(), lit(2.0))),
+        ..decay
+    };
+    let weather = Scene {
+        air: Air::Weather(Weather {
+            temperature_c: lit(28.0),
+            relative_humidity: lit(0.6),
+            pressure: Pressure::Altitude(lit(300.0)),
+        }),
+        ..profile
+    };
+    [
+        ("1_gravity", gravity),
+        ("2_drag", drag),
+        ("3_lift", lift),
+        ("4_spin_decay", decay),
+        ("5_wind_profile", profile),
+        ("6_weather", weather),
+    ]
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

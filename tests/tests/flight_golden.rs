@@ -326,9 +326,9 @@ fn tight_per_case() {
 #[test]
 #[ignore = "prints the ladder's evaluation counts"]
 fn ladder_counts() {
-    use carry_core::air::{Air, Pressure, Weather};
+    use carry_core::scene::effect_ladder;
     use carry_core::units::{deg, rpm};
-    use carry_core::{Effects, Launch, Scene, Wind};
+    use carry_core::{Launch, Scene};
     let m = Launch {
         ball_speed_mps: 74.65568,
         launch_angle_rad: deg(10.9),
@@ -338,49 +338,8 @@ fn ladder_counts() {
     }
     .ball_motion()
     .unwrap();
-    let base = Scene {
-        effects: Effects::GRAVITY_ONLY,
-        ..Scene::default()
-    };
-    let drag = Scene {
-        effects: Effects {
-            drag: true,
-            ..Effects::GRAVITY_ONLY
-        },
-        ..base
-    };
-    let lift = Scene {
-        effects: Effects {
-            drag: true,
-            lift: true,
-            spin_decay: false,
-        },
-        ..base
-    };
-    let decay = Scene {
-        effects: Effects::ALL,
-        ..base
-    };
-    let profile = Scene {
-        wind: Wind::profile(nalgebra::Vector3::new(-5.0, 0.0, 2.0)),
-        ..decay
-    };
-    let weather = Scene {
-        air: Air::Weather(Weather {
-            temperature_c: 28.0,
-            relative_humidity: 0.6,
-            pressure: Pressure::Altitude(300.0),
-        }),
-        ..profile
-    };
-    for (name, s) in [
-        ("gravity", base),
-        ("drag", drag),
-        ("lift", lift),
-        ("decay", decay),
-        ("profile", profile),
-        ("weather", weather),
-    ] {
+    let ladder32 = effect_ladder::<f32>();
+    for ((name, s), (_, s32)) in effect_ladder::<f64>().into_iter().zip(ladder32) {
         for (iname, i) in [
             ("rk4 0.05", Integrator::Rk4 { step_s: 0.05 }),
             ("default f64", Integrator::default()),
@@ -392,11 +351,14 @@ fn ladder_counts() {
                 o.stats.force_evaluations, o.stats.rejected_steps, o.carry_m
             );
         }
-        let m32 = BallMotionF32::from(&m);
+        let m32 = carry_core::BallMotion {
+            velocity_mps: m.velocity_mps.cast::<f32>(),
+            spin_radps: m.spin_radps.cast::<f32>(),
+        };
         let o = fly(
             &Ball::<f32>::standard(),
-            &m32.0,
-            &to32(&s),
+            &m32,
+            &s32,
             &Integrator::default(),
             None,
         )
@@ -415,48 +377,6 @@ fn ladder_counts() {
             "{name}: {} evals carry {:.4}",
             o.stats.force_evaluations, o.carry_m
         );
-    }
-}
-
-struct BallMotionF32(carry_core::BallMotion<f32>);
-impl From<&carry_core::BallMotion<f64>> for BallMotionF32 {
-    fn from(m: &carry_core::BallMotion<f64>) -> Self {
-        Self(carry_core::BallMotion {
-            velocity_mps: m.velocity_mps.cast(),
-            spin_radps: m.spin_radps.cast(),
-        })
-    }
-}
-fn to32(s: &carry_core::Scene<f64>) -> carry_core::Scene<f32> {
-    use carry_core::Wind;
-    use carry_core::air::{Air, Pressure, Weather};
-    carry_core::Scene {
-        effects: s.effects,
-        air: match s.air {
-            Air::Density(d) => Air::Density(d as f32),
-            Air::Weather(w) => Air::Weather(Weather {
-                temperature_c: w.temperature_c as f32,
-                relative_humidity: w.relative_humidity as f32,
-                pressure: match w.pressure {
-                    Pressure::Pa(p) => Pressure::Pa(p as f32),
-                    Pressure::Altitude(h) => Pressure::Altitude(h as f32),
-                },
-            }),
-        },
-        wind: match s.wind {
-            Wind::None => Wind::None,
-            Wind::Uniform(w) => Wind::Uniform(w.cast()),
-            Wind::Profile {
-                reference_mps,
-                reference_height_m,
-                exponent,
-            } => Wind::Profile {
-                reference_mps: reference_mps.cast(),
-                reference_height_m: reference_height_m as f32,
-                exponent: exponent as f32,
-            },
-        },
-        ..carry_core::Scene::default()
     }
 }
 
