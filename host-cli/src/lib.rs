@@ -15,7 +15,6 @@ pub mod params;
 pub mod plot;
 pub mod report;
 pub mod scene;
-pub mod study;
 pub mod units;
 
 use clap::Parser as _;
@@ -208,7 +207,9 @@ fn dispatch(cli: Cli) -> Result<(), Failure> {
             .as_bytes(),
         ),
         Command::Bench(BenchCmd::Accuracy { json, svg, quick }) => {
-            study::run(&study::StudyOptions { json, svg, quick }).map_err(Failure::Other)
+            let text = carry_lab::study::run(&carry_lab::study::StudyOptions { json, svg, quick })
+                .map_err(Failure::Other)?;
+            write_stdout(text.as_bytes())
         }
     }
 }
