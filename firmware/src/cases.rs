@@ -11,6 +11,7 @@ use carry_core::air::{Air, Pressure, Weather};
 use carry_core::flight::{self, Integrator};
 use carry_core::impact::{self, Solver};
 use carry_core::real::{Real, lit};
+use carry_core::aero::AeroModel;
 use carry_core::scene::{Effects, Scene};
 use carry_core::units::{deg, rpm};
 use carry_core::wind::Wind;
@@ -273,6 +274,8 @@ impl FlightInput {
             None => Wind::Uniform(w),
         };
         Scene {
+            // The golden files pin the seed's aerodynamics.
+            aero: AeroModel::quintavalla(),
             effects: Effects {
                 drag: self.drag,
                 lift: self.lift,

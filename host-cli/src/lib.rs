@@ -206,9 +206,24 @@ fn dispatch(cli: Cli) -> Result<(), Failure> {
             }
             .as_bytes(),
         ),
-        Command::Bench(BenchCmd::Accuracy { json, svg, quick }) => {
-            let text = carry_lab::study::run(&carry_lab::study::StudyOptions { json, svg, quick })
-                .map_err(Failure::Other)?;
+        Command::Bench(BenchCmd::Accuracy {
+            json,
+            svg,
+            quick,
+            aero,
+        }) => {
+            let aero = match aero {
+                Some(a) => carry_lab::aero_file::resolve(&a)
+                    .map_err(|e| Failure::Input(error::InputError::new("aero", e)))?,
+                None => carry_core::aero::AeroModel::default(),
+            };
+            let options = carry_lab::study::StudyOptions {
+                json,
+                svg,
+                quick,
+                aero,
+            };
+            let text = carry_lab::study::run(&options).map_err(Failure::Other)?;
             write_stdout(text.as_bytes())
         }
     }

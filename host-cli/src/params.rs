@@ -6,6 +6,7 @@
 
 use crate::error::InputError;
 use crate::units::{Quantity, Units};
+use carry_core::aero::AeroModel;
 use carry_core::{PRESETS, Preset};
 
 /// Club head: a preset and any overrides.
@@ -106,6 +107,8 @@ pub struct SceneParams {
     pub no_lift: bool,
     /// Disable spin decay.
     pub no_spin_decay: bool,
+    /// The aerodynamic model (`None`: the calibrated default).
+    pub aero: Option<AeroModel<f64>>,
 }
 
 /// Everything one shot needs (numerics are global, see [`crate::compute::Numerics`]).
@@ -189,6 +192,8 @@ pub enum Kind {
     Tensor,
     /// A preset name.
     Preset,
+    /// An aerodynamic model: a built-in name or a model file.
+    Aero,
     /// `true`/`false`/`1`/`0`/`yes`/`no`.
     Bool,
 }
@@ -281,6 +286,7 @@ keys! {
     NoDrag = "no_drag", Bool, Plain;
     NoLift = "no_lift", Bool, Plain;
     NoSpinDecay = "no_spin_decay", Bool, Plain;
+    Aero = "aero", Aero, Plain;
 }
 
 /// A parsed value.
@@ -294,6 +300,8 @@ pub enum Value {
     Tensor([f64; 9]),
     /// A preset.
     Preset(&'static Preset),
+    /// An aerodynamic model.
+    Aero(AeroModel<f64>),
     /// A switch.
     Bool(bool),
 }
@@ -324,6 +332,9 @@ impl Key {
             Kind::Vector => parse_vec3(text).map(Value::Vector).map_err(err),
             Kind::Tensor => parse_tensor(text).map(Value::Tensor).map_err(err),
             Kind::Preset => parse_preset(text).map(Value::Preset).map_err(err),
+            Kind::Aero => carry_lab::aero_file::resolve(text.trim())
+                .map(Value::Aero)
+                .map_err(err),
             Kind::Bool => parse_bool(text).map(Value::Bool).map_err(err),
         }
     }
@@ -397,6 +408,7 @@ impl Key {
             }
             Value::Tensor(t) => c.inertia_kgm2 = Some(t),
             Value::Preset(preset) => c.preset = preset,
+            Value::Aero(model) => s.aero = Some(model),
             Value::Bool(b) => match self {
                 Key::NoDrag => s.no_drag = b,
                 Key::NoLift => s.no_lift = b,

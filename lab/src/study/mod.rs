@@ -41,6 +41,8 @@ pub struct StudyOptions {
     pub svg: Option<PathBuf>,
     /// A quick, smaller study.
     pub quick: bool,
+    /// The aerodynamic model of every shot but the golden flights (which keep the seed's).
+    pub aero: carry_core::aero::AeroModel<f64>,
 }
 
 /// The "default fidelity" target: carry within 1 cm of the reference on every shot.
@@ -52,7 +54,7 @@ pub const CARRY_TARGET_M: f64 = 0.01;
 /// # Errors
 /// A failing reference (a bug), or failing to write the SVG.
 pub fn run(options: &StudyOptions) -> Result<String, String> {
-    let study = assemble::build(options.quick)?;
+    let study = assemble::build(options.quick, &options.aero)?;
     if let Some(path) = &options.svg {
         chart::draw(path, &chart_points(&study))
             .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
