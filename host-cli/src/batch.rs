@@ -228,7 +228,7 @@ fn process(
     failed
 }
 
-fn open(input: &PathBuf) -> Result<(Box<dyn Read>, Option<u64>), InputError> {
+pub(crate) fn open(input: &PathBuf) -> Result<(Box<dyn Read>, Option<u64>), InputError> {
     if input.as_os_str() == "-" {
         return Ok((Box::new(std::io::stdin().lock()), None));
     }

@@ -60,6 +60,10 @@ pub enum Command {
     /// Benchmarks and studies.
     #[command(subcommand)]
     Bench(BenchCmd),
+    /// Fit a model family's coefficients to measured shots (CSV), with per-row residuals and
+    /// leave-one-out errors; `--output` writes the model for `--aero FILE.toml`.
+    #[command(after_help = crate::fit::AFTER_HELP)]
+    Fit(crate::fit::FitCmd),
 }
 
 fn finite(s: &str) -> Result<f64, String> {
