@@ -16,6 +16,7 @@ use std::path::{Path, PathBuf};
 #[path = "src/cases.rs"]
 mod cases;
 
+use carry_core::aero::AeroModel;
 use cases::{FLIGHT_OUTPUTS, FlightInput, IMPACT_OUTPUTS, ImpactInput};
 use serde_json::Value;
 
@@ -252,12 +253,21 @@ fn flight(root: &Value, code: &mut String) {
             .iter()
             .map(|(_, i)| host::<f64, FLIGHT_OUTPUTS>(input.outputs(i), bits64))
             .collect();
+        // The calibrated default model at the default fidelity.
+        let tour32 = host::<f32, FLIGHT_OUTPUTS>(
+            input.outputs_with(&carry_core::Integrator::default(), AeroModel::tour_2023()),
+            bits32,
+        );
+        let tour64 = host::<f64, FLIGHT_OUTPUTS>(
+            input.outputs_with(&carry_core::Integrator::default(), AeroModel::tour_2023()),
+            bits64,
+        );
         writeln!(
             code,
             "FlightCase {{ name: {name:?}, input: FlightInput {{ ball_speed_mps: {}, launch_angle_deg: {}, \
              launch_direction_deg: {}, backspin_rpm: {}, sidespin_rpm: {}, landing_height_m: {}, drag: {}, lift: {}, \
              spin_decay: {}, air_density_kgm3: {}, weather: {weather}, wind_mps: {}, wind_profile: {profile} }}, \
-             expected: {}, host_f32: [{}], host_f64: [{}] }},",
+             expected: {}, host_f32: [{}], host_f64: [{}], tour2023_f32: {tour32}, tour2023_f64: {tour64} }},",
             f(input.ball_speed_mps),
             f(input.launch_angle_deg),
             f(input.launch_direction_deg),

@@ -7,11 +7,11 @@
 //! `core`, `carry-core` and `nalgebra`.
 #![allow(dead_code)]
 
+use carry_core::aero::AeroModel;
 use carry_core::air::{Air, Pressure, Weather};
 use carry_core::flight::{self, Integrator};
 use carry_core::impact::{self, Solver};
 use carry_core::real::{Real, lit};
-use carry_core::aero::AeroModel;
 use carry_core::scene::{Effects, Scene};
 use carry_core::units::{deg, rpm};
 use carry_core::wind::Wind;
@@ -247,9 +247,15 @@ impl FlightInput {
         }
     }
 
-    /// The scene, precision `T`.
+    /// The scene, precision `T`, with the seed's aerodynamics (the golden files pin them).
     #[must_use]
     pub fn scene<T: Real>(&self) -> Scene<T> {
+        self.scene_with(AeroModel::quintavalla())
+    }
+
+    /// The scene, precision `T`, with the aerodynamic model `aero`.
+    #[must_use]
+    pub fn scene_with<T: Real>(&self, aero: AeroModel<T>) -> Scene<T> {
         let air = match (self.weather, self.air_density_kgm3) {
             (Some((t, rh, pa, alt)), _) => Air::Weather(Weather {
                 temperature_c: lit(t),
@@ -274,8 +280,7 @@ impl FlightInput {
             None => Wind::Uniform(w),
         };
         Scene {
-            // The golden files pin the seed's aerodynamics.
-            aero: AeroModel::quintavalla(),
+            aero,
             effects: Effects {
                 drag: self.drag,
                 lift: self.lift,
@@ -295,12 +300,19 @@ impl FlightInput {
     pub fn fly<T: Real>(
         &self,
         integrator: &Integrator<T>,
+        aero: AeroModel<T>,
     ) -> Result<flight::FlightOutcome<T>, Error> {
         let motion = self.launch::<T>().ball_motion()?;
-        flight::fly(&Ball::standard(), &motion, &self.scene(), integrator, None)
+        flight::fly(
+            &Ball::standard(),
+            &motion,
+            &self.scene_with(aero),
+            integrator,
+            None,
+        )
     }
 
-    /// [`Self::fly`], flattened (see [`FLIGHT_OUTPUTS`]).
+    /// [`Self::fly`] with the seed's aerodynamics, flattened (see [`FLIGHT_OUTPUTS`]).
     ///
     /// # Errors
     /// As [`Self::fly`].
@@ -308,7 +320,19 @@ impl FlightInput {
         &self,
         integrator: &Integrator<T>,
     ) -> Result<[T; FLIGHT_OUTPUTS], Error> {
-        let o = self.fly(integrator)?;
+        self.outputs_with(integrator, AeroModel::quintavalla())
+    }
+
+    /// [`Self::fly`] with the aerodynamic model `aero`, flattened.
+    ///
+    /// # Errors
+    /// As [`Self::fly`].
+    pub fn outputs_with<T: Real>(
+        &self,
+        integrator: &Integrator<T>,
+        aero: AeroModel<T>,
+    ) -> Result<[T; FLIGHT_OUTPUTS], Error> {
+        let o = self.fly(integrator, aero)?;
         let n = |x: u32| -> T { lit(f64::from(x)) };
         Ok([
             o.carry_m,

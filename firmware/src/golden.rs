@@ -51,6 +51,10 @@ pub struct FlightCase {
     pub host_f32: [Host<FLIGHT_OUTPUTS>; 3],
     /// Host results in f64, per integrator.
     pub host_f64: [Host<FLIGHT_OUTPUTS>; 3],
+    /// Host results in f32 with the calibrated model (`tour2023`), default fidelity.
+    pub tour2023_f32: Host<FLIGHT_OUTPUTS>,
+    /// Host results in f64 with the calibrated model (`tour2023`), default fidelity.
+    pub tour2023_f64: Host<FLIGHT_OUTPUTS>,
 }
 
 include!(concat!(env!("OUT_DIR"), "/golden_data.rs"));

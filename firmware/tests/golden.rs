@@ -129,6 +129,28 @@ fn flight_bit_identity<T: Precision>(
     defmt::assert_eq!(differ, 0);
 }
 
+fn calibrated_bit_identity<T: Precision>(
+    host: impl Fn(&carry_firmware::golden::FlightCase) -> &Host<13>,
+) {
+    let mut differ = 0u32;
+    for case in FLIGHT {
+        let target = case.input.outputs_with::<T>(
+            &carry_core::Integrator::default(),
+            carry_core::aero::AeroModel::tour_2023(),
+        );
+        if !identical(case.name, "tour2023", &FLIGHT_NAMES, &target, host(case)) {
+            differ += 1;
+        }
+    }
+    defmt::info!(
+        "flight {=str} tour2023: {=u32} flights, {=u32} differ from the host",
+        T::NAME,
+        FLIGHT.len() as u32,
+        differ
+    );
+    defmt::assert_eq!(differ, 0);
+}
+
 /// Relative difference of `a` from `b`, scaled by `scale`.
 fn rel(a: f64, b: f64, scale: f64) -> f64 {
     let d = a - b;
@@ -250,6 +272,13 @@ mod tests {
     #[test]
     fn flight_f64_bit_identical_to_host() {
         flight_bit_identity::<f64>(|c| &c.host_f64);
+    }
+
+    /// The calibrated default model (`tour2023`), every golden launch and scene.
+    #[test]
+    fn flight_calibrated_model_bit_identical_to_host() {
+        calibrated_bit_identity::<f32>(|c| &c.tour2023_f32);
+        calibrated_bit_identity::<f64>(|c| &c.tour2023_f64);
     }
 
     /// The host suite's tolerances: 1e-9 relative in f64, 4e-6 in f32.

@@ -168,6 +168,23 @@ fn suite<T: Real>(ticks: &Ticks, k: &mut u32, p: &str) {
                 .map(|o| (o.flight.stats.force_evaluations, to_f64(o.flight.carry_m)))
         },
     );
+    // The same shot with the seed's aerodynamics (the calibrated model is the default).
+    let seed = Scene::<T> {
+        aero: black_box(carry_core::aero::AeroModel::quintavalla()),
+        ..Scene::default()
+    }
+    .prepare(&ball)
+    .unwrap_or_else(|_| carry_firmware::exit(1));
+    op(
+        ticks,
+        k,
+        label!("FULL SHOT, seed aerodynamics (quintavalla)"),
+        1,
+        &mut || {
+            carry_core::shot::play(&club, &ball, &delivery, &seed, &fidelity, None)
+                .map(|o| (o.flight.stats.force_evaluations, to_f64(o.flight.carry_m)))
+        },
+    );
     // A launch monitor's everyday delivery: every angle non-zero, an off-centre strike
     // (the reference delivery's zero angles make the five sin/cos of `strike` trivial).
     let mut everyday = delivery;
