@@ -13,7 +13,8 @@
 //! contact slip       s = u + R w                       (w: backspin about b̂)
 //! rolls out if       |s| ≤ (7/2) μ (1 + e) v_n':   u' = (5u − 2Rw)/7,  w' = −u'/R
 //! else it slides:    u' = u − sgn(s) μ (1+e) v_n',  w' = w − sgn(s) (5/2) μ (1+e) v_n' / R
-//! rebound            v' = u' t̂' + e v_n' n̂'   (t̂', n̂' = t̂, n̂ tilted back by θ_c)
+//! rebound            v' = u' t̂' + e v_n' n̂'   (t̂', n̂' = t̂, n̂ tilted back by θ_c),
+//!                    without any part into the ground plane (a fast backward exit)
 //! ```
 //!
 //! The last factor of θ_c is ours: Penner fitted the crater law to landings (Haake's
@@ -139,8 +140,15 @@ pub(crate) fn rebound<T: Real>(
     let v1 = e * vn;
     let t1 = t * c + n * s;
     let n1 = n * c - t * s;
+    let mut out = t1 * u1 + n1 * v1;
+    // A fast backward exit out of the tilted crater would point into the ground plane:
+    // the ground stops that part (the ball leaves along it).
+    let into = out.dot(n);
+    if into < T::zero() {
+        out -= n * into;
+    }
     Rebound {
-        velocity_mps: t1 * u1 + n1 * v1,
+        velocity_mps: out,
         spin_radps: spin + b * (w1 - w),
         rolled,
     }
