@@ -11,6 +11,7 @@ pub mod cli;
 pub mod clubs;
 pub mod compute;
 pub mod error;
+pub mod ground;
 pub mod params;
 pub mod plot;
 pub mod report;

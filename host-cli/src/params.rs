@@ -5,6 +5,7 @@
 //! A key's name is the option's long name in snake_case (`--club-speed` ↔ `club_speed`).
 
 use crate::error::InputError;
+use crate::ground::GroundSpec;
 use crate::units::{Quantity, Units};
 use carry_core::{PRESETS, Preset};
 
@@ -106,6 +107,8 @@ pub struct SceneParams {
     pub no_lift: bool,
     /// Disable spin decay.
     pub no_spin_decay: bool,
+    /// The ground after the landing (empty: none).
+    pub ground: GroundSpec,
 }
 
 /// Everything one shot needs (numerics are global, see [`crate::compute::Numerics`]).
@@ -191,6 +194,8 @@ pub enum Kind {
     Preset,
     /// `true`/`false`/`1`/`0`/`yes`/`no`.
     Bool,
+    /// A surface name or a ground file ([`crate::ground`]).
+    Ground,
 }
 
 macro_rules! keys {
@@ -281,6 +286,14 @@ keys! {
     NoDrag = "no_drag", Bool, Plain;
     NoLift = "no_lift", Bool, Plain;
     NoSpinDecay = "no_spin_decay", Bool, Plain;
+    Ground = "ground", Ground, Plain;
+    Stimp = "stimp", Number, Plain;
+    GroundSlope = "ground_slope", Number, Plain;
+    GroundSlopeDirection = "ground_slope_direction", Number, Plain;
+    GroundRestitution = "ground_restitution", Number, Plain;
+    GroundFriction = "ground_friction", Number, Plain;
+    RollingResistance = "rolling_resistance", Number, Plain;
+    CraterScale = "crater_scale", Number, Plain;
 }
 
 /// A parsed value.
@@ -296,6 +309,8 @@ pub enum Value {
     Preset(&'static Preset),
     /// A switch.
     Bool(bool),
+    /// A ground (surface and options).
+    Ground(GroundSpec),
 }
 
 impl Key {
@@ -325,6 +340,7 @@ impl Key {
             Kind::Tensor => parse_tensor(text).map(Value::Tensor).map_err(err),
             Kind::Preset => parse_preset(text).map(Value::Preset).map_err(err),
             Kind::Bool => parse_bool(text).map(Value::Bool).map_err(err),
+            Kind::Ground => crate::ground::parse(text).map(Value::Ground).map_err(err),
         }
     }
 
@@ -383,6 +399,13 @@ impl Key {
                     Key::WindExponent => s.wind_exponent = Some(x),
                     Key::LandingHeight => s.landing_height_m = Some(x),
                     Key::TimeLimit => s.time_limit_s = Some(x),
+                    Key::Stimp => s.ground.stimp_ft = Some(x),
+                    Key::GroundSlope => s.ground.slope_deg = Some(x),
+                    Key::GroundSlopeDirection => s.ground.slope_direction_deg = Some(x),
+                    Key::GroundRestitution => s.ground.restitution = Some(x),
+                    Key::GroundFriction => s.ground.friction = Some(x),
+                    Key::RollingResistance => s.ground.rolling_resistance = Some(x),
+                    Key::CraterScale => s.ground.crater_scale = Some(x),
                     _ => {}
                 }
             }
@@ -403,6 +426,7 @@ impl Key {
                 Key::NoSpinDecay => s.no_spin_decay = b,
                 _ => {}
             },
+            Value::Ground(g) => s.ground.merge(&g),
         }
     }
 }
