@@ -351,28 +351,36 @@ impl<'r, 'b, T: Real> Tracker<'r, 'b, T> {
 }
 
 /// Where in the step the ball comes down through `plane` (θ), if it does: the plane
-/// analogue of [`Tracker::locate`], with the height `g(θ) = n·p(θ) − c` and its rate
-/// `n·v(θ)` as linear combinations of the component interpolants. A hop starts on the
-/// plane (`g(0) = 0`) moving away from it, so the bracket starts at the step's highest
-/// point above the plane when the normal velocity turns in the step.
+/// analogue of [`Tracker::locate`], with the height `g(θ) = n·p(θ) − c` a linear
+/// combination of the component interpolants.
 fn locate_on_plane<T: Real>(step: &Step<'_, T>, plane: &Plane<T>) -> Option<T> {
     let n = plane.normal;
-    let height = step.poly_along(&n, 0, plane.offset);
-    let rate = step.poly_along(&n, 3, T::zero());
-    let (g0, g1) = (height.at(T::zero()), height.at(T::one()));
-    let (r0, r1) = (rate.at(T::zero()), rate.at(T::one()));
-    let mut above = (g0 > T::zero()).then_some((T::zero(), g0));
-    if r0 > T::zero() && r1 <= T::zero() {
-        let th = find_root(|x| rate.at(x), T::zero(), T::one(), r0, r1);
-        let ga = height.at(th);
-        above = (ga > T::zero()).then_some((th, ga));
+    let level = n.x == T::zero() && n.z == T::zero() && n.y == T::one();
+    let height = if level {
+        // Level ground: the height interpolant itself.
+        let mut height = step.poly_of(Y);
+        height.0[0] -= plane.offset;
+        height
+    } else {
+        step.poly_along(&n, 0, plane.offset)
+    };
+    let [g0, r2, r3, r4, r5] = height.0;
+    let g1 = height.at(T::one());
+    if !(g1 <= T::zero()) {
+        return None;
     }
-    match above {
-        Some((lo, g_lo)) if g1 <= T::zero() => {
-            Some(find_root(|x| height.at(x), lo, T::one(), g_lo, g1))
-        }
-        _ => None,
+    if g0 > T::zero() {
+        return Some(find_root(|x| height.at(x), T::zero(), T::one(), g0, g1));
     }
+    // The hop's first step starts on the plane (g₀ = 0 to rounding): the landing is the
+    // root of the deflated g(θ)/θ = r₂ + (1−θ)(r₃ + θ(r₄ + (1−θ)r₅)), positive at 0
+    // (h·ġ₀ > 0, leaving the plane) and g₁ − g₀ < 0 at 1.
+    let deflated = |th: T| {
+        let th1 = T::one() - th;
+        r2 + th1 * (r3 + th * (r4 + th1 * r5))
+    };
+    let (d0, d1) = (r2 + r3, r2);
+    (d0 > T::zero() && d1 < T::zero()).then(|| find_root(deflated, T::zero(), T::one(), d0, d1))
 }
 
 impl<T: Real> Sample<T> {

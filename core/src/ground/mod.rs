@@ -31,11 +31,11 @@ pub const STOP_HEIGHT_M: f64 = 0.005;
 /// At most this many hops; the ball then rolls (a bound on the run time, never reached by
 /// a golf shot: they stop within about ten).
 pub const MAX_BOUNCES: u32 = 64;
-/// Hops lower than this (m) fly with the scene's forces frozen at the bounce (one force
-/// evaluation, a parabola in closed form): over such a hop (under 0.3 s) the speed
-/// changes by a few per cent, so the force does too, and flying it with the integrator
-/// would cost 7 force evaluations or more. Higher hops are integrated.
-pub const LOW_HOP_HEIGHT_M: f64 = 0.1;
+/// Hops lower than this (m) fly in closed form with the scene's forces at their two ends
+/// (two force evaluations, the acceleration linear in time; see `low_hop`); flying them
+/// with the integrator costs 7 force evaluations or more and an event search. Higher hops
+/// are integrated. docs/ground.md measures what this changes (millimetres).
+pub const LOW_HOP_HEIGHT_M: f64 = 1.0;
 /// Steepest accepted ground (rad): 45°.
 pub const MAX_SLOPE_RAD: f64 = core::f64::consts::FRAC_PI_4;
 
@@ -196,37 +196,75 @@ pub(crate) trait Hopper<T: Real> {
     fn forces(&self, at: &Contact<T>, stats: &mut Stats) -> (Vector3<T>, T);
 }
 
-/// A low hop with the forces frozen at its start: `p(τ) = p₀ + v₀τ + ½a⃗τ²` until it is
-/// back on the plane through `p₀` at `τ = −2 (v₀·n̂)/(a⃗·n̂)`; the spin magnitude changes
-/// at its initial rate. `None` when the force does not pull the ball back to the plane.
-fn parabola<T: Real>(
+/// A low hop in closed form with the scene's forces at its ends: the acceleration and the
+/// spin's rate of change are taken linear in time between their values at the bounce and
+/// at the landing predicted with the initial force (two force evaluations):
+///
+/// ```text
+/// p(τ) = p₀ + v₀τ + a₀τ²/2 + jτ³/6,   v(τ) = v₀ + a₀τ + jτ²/2,   j = (a₁ − a₀)/τ₁
+/// ```
+///
+/// landing where `n̂·(p − p₀) = 0` (two Newton steps from `τ₁`). `None` when the force does
+/// not pull the ball back to the plane.
+fn low_hop<T: Real, H: Hopper<T>>(
     from: &Contact<T>,
     n: &Vector3<T>,
-    g: &Vector3<T>,
-    spin_rate: T,
+    hopper: &H,
+    stats: &mut Stats,
     recorder: Option<&mut Recorder<'_, T>>,
 ) -> Option<Contact<T>> {
-    let g_n = -g.dot(n);
+    let (a0, s0) = hopper.forces(from, stats);
     let vn = from.velocity.dot(n);
-    if !(g_n > T::zero()) {
+    let two = lit::<T>(2.0);
+    // First guess: the parabola of the initial force.
+    let an = a0.dot(n);
+    if !(an < T::zero()) {
         return None;
     }
-    let duration = lit::<T>(2.0) * vn / g_n;
-    let spin_at = |tau: T| {
-        let s = from.spin.norm();
-        if s > T::zero() {
-            from.spin * ((s + spin_rate * tau).max(T::zero()) / s)
+    let t1 = -two * vn / an;
+    let half = lit::<T>(0.5);
+    let sixth = lit::<T>(1.0 / 6.0);
+    let spin0 = from.spin.norm();
+    let spin_at = |tau: T, rate0: T, jerk: T| {
+        if spin0 > T::zero() {
+            let s = (spin0 + rate0 * tau + jerk * tau * tau * half).max(T::zero());
+            from.spin * (s / spin0)
         } else {
             from.spin
         }
     };
-    let half = lit::<T>(0.5);
-    let at = |tau: T| {
+    let state = |tau: T, j: &Vector3<T>| {
         (
-            from.position + from.velocity * tau + g * (half * tau * tau),
-            from.velocity + g * tau,
+            from.position
+                + from.velocity * tau
+                + a0 * (half * tau * tau)
+                + j * (sixth * tau * tau * tau),
+            from.velocity + a0 * tau + j * (half * tau * tau),
         )
     };
+    let zero = Vector3::zeros();
+    let (p1, v1) = state(t1, &zero);
+    let predicted = Contact {
+        time: from.time + t1,
+        position: p1,
+        velocity: v1,
+        spin: spin_at(t1, s0, T::zero()),
+    };
+    let (a1, s1) = hopper.forces(&predicted, stats);
+    let (j, spin_jerk) = ((a1 - a0) / t1, (s1 - s0) / t1);
+    // n̂·(p − p₀)/τ = vn + an τ/2 + jn τ²/6 = 0, Newton from τ₁.
+    let jn = j.dot(n);
+    let mut tau = t1;
+    for _ in 0..2 {
+        let q = vn + an * tau * half + jn * tau * tau * sixth;
+        let dq = an * half + jn * tau * lit(1.0 / 3.0);
+        if dq < T::zero() {
+            tau -= q / dq;
+        }
+    }
+    if !(tau > T::zero() && tau.is_finite()) {
+        return None;
+    }
     if let Some(r) = recorder {
         let dt = r.interval();
         let k = crate::real::to_f64(from.time / dt);
@@ -238,25 +276,25 @@ fn parabola<T: Real>(
         // Every pass pushes a sample; a full recorder stops it.
         while !r.is_full() {
             k = k.saturating_add(1);
-            let tau = lit::<T>(f64::from(k)) * dt - from.time;
-            if !(tau > T::zero() && tau < duration) {
+            let t = lit::<T>(f64::from(k)) * dt - from.time;
+            if !(t > T::zero() && t < tau) {
                 break;
             }
-            let (p, v) = at(tau);
+            let (p, v) = state(t, &j);
             r.push(crate::flight::Sample {
-                time_s: from.time + tau,
+                time_s: from.time + t,
                 position_m: p,
                 velocity_mps: v,
-                spin_radps: spin_at(tau),
+                spin_radps: spin_at(t, s0, spin_jerk),
             });
         }
     }
-    let (position, velocity) = at(duration);
+    let (position, velocity) = state(tau, &j);
     Some(Contact {
-        time: from.time + duration,
+        time: from.time + tau,
         position,
         velocity,
-        spin: spin_at(duration),
+        spin: spin_at(tau, s0, spin_jerk),
     })
 }
 
@@ -296,8 +334,7 @@ pub(crate) fn run_out<T: Real, H: Hopper<T>>(
             ..at
         };
         let low = if vn * vn < low_hop_speed_sq {
-            let (a, spin_rate) = hopper.forces(&from, &mut stats);
-            parabola(&from, &n, &a, spin_rate, recorder.as_deref_mut())
+            low_hop(&from, &n, hopper, &mut stats, recorder.as_deref_mut())
         } else {
             None
         };
