@@ -205,6 +205,8 @@ fn the_recording_includes_bounces_and_roll() {
         "time runs forward"
     );
     assert!(!rec.is_full());
+    // Recording changes nothing.
+    assert_eq!(FlightOutcome { recording_full: false, ..out }, go(&tour_driver(), Some(Ground::level(Surface::FairwayFirm))));
 }
 
 fn energy(v: &Vector3<f64>, w: &Vector3<f64>) -> f64 {
