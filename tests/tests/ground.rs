@@ -206,7 +206,13 @@ fn the_recording_includes_bounces_and_roll() {
     );
     assert!(!rec.is_full());
     // Recording changes nothing.
-    assert_eq!(FlightOutcome { recording_full: false, ..out }, go(&tour_driver(), Some(Ground::level(Surface::FairwayFirm))));
+    assert_eq!(
+        FlightOutcome {
+            recording_full: false,
+            ..out
+        },
+        go(&tour_driver(), Some(Ground::level(Surface::FairwayFirm)))
+    );
 }
 
 fn energy(v: &Vector3<f64>, w: &Vector3<f64>) -> f64 {

@@ -109,7 +109,8 @@ pub(crate) fn rebound<T: Real>(
     let b = t.cross(n);
     let vt = vt.dot(&t).max(T::zero());
     let w = spin.dot(&b);
-    let speed = vt.hypot(vn);
+    // (No `hypot`: libm's single-precision one works in f64, software on a Cortex-M4F.)
+    let speed = (vt * vt + vn * vn).sqrt();
     let phi = vt.atan2(vn);
     let tilt = turf.crater_scale
         * lit::<T>(CRATER_REFERENCE_RAD)
@@ -118,7 +119,7 @@ pub(crate) fn rebound<T: Real>(
     // Faded out below the reference normal speed (see the module docs).
     let fade = (vn / lit::<T>(CRATER_REFERENCE_NORMAL_SPEED_MPS)).min(T::one());
     let tilt = (tilt * fade).min(phi).max(T::zero());
-    let (s, c) = tilt.sin_cos();
+    let (s, c) = crate::geometry::sin_cos(tilt);
     let u = vt * c - vn * s;
     let vn = (vt * s + vn * c).max(T::zero());
     let e = restitution(vn, turf.restitution);
