@@ -15,6 +15,8 @@ use std::path::{Path, PathBuf};
 
 #[path = "src/cases.rs"]
 mod cases;
+#[path = "src/ground_cases.rs"]
+mod ground_cases;
 
 use carry_core::aero::AeroModel;
 use cases::{FLIGHT_OUTPUTS, FlightInput, IMPACT_OUTPUTS, ImpactInput};
@@ -45,9 +47,11 @@ fn main() {
     );
     impact(&read_json(&golden.join("impact.json")), &mut code);
     flight(&read_json(&golden.join("flight.json")), &mut code);
+    ground(&mut code);
     std::fs::write(out.join("golden_data.rs"), code).unwrap();
     println!("cargo::rerun-if-changed={}", golden.display());
     println!("cargo::rerun-if-changed=src/cases.rs");
+    println!("cargo::rerun-if-changed=src/ground_cases.rs");
     println!("cargo::rerun-if-changed=build.rs");
 }
 
@@ -283,6 +287,23 @@ fn flight(root: &Value, code: &mut String) {
             hosts32.join(", "),
             hosts64.join(", "),
             name = c["name"].as_str().unwrap(),
+        )
+        .unwrap();
+    }
+    writeln!(code, "];").unwrap();
+}
+
+/// The host's results of the full shots with a ground (src/ground_cases.rs).
+fn ground(code: &mut String) {
+    use ground_cases::{GROUND_CASES, GROUND_OUTPUTS};
+    writeln!(code, "pub const GROUND: &[GroundHost] = &[").unwrap();
+    for c in &GROUND_CASES {
+        writeln!(
+            code,
+            "GroundHost {{ name: {:?}, host_f32: {}, host_f64: {} }},",
+            c.name,
+            host::<f32, GROUND_OUTPUTS>(c.outputs(), bits32),
+            host::<f64, GROUND_OUTPUTS>(c.outputs(), bits64),
         )
         .unwrap();
     }

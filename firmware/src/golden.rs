@@ -57,4 +57,15 @@ pub struct FlightCase {
     pub tour2023_f64: Host<FLIGHT_OUTPUTS>,
 }
 
+/// One full shot with a ground and the host's results (f32, f64).
+#[derive(Debug, Clone, Copy)]
+pub struct GroundHost {
+    /// Case name ([`crate::ground_cases::GROUND_CASES`], same order).
+    pub name: &'static str,
+    /// Host result in f32.
+    pub host_f32: Host<{ crate::ground_cases::GROUND_OUTPUTS }>,
+    /// Host result in f64.
+    pub host_f64: Host<{ crate::ground_cases::GROUND_OUTPUTS }>,
+}
+
 include!(concat!(env!("OUT_DIR"), "/golden_data.rs"));

@@ -12,6 +12,7 @@ pub mod clubs;
 pub mod compute;
 pub mod error;
 pub mod fit;
+pub mod ground;
 pub mod params;
 pub mod plot;
 pub mod report;

@@ -5,6 +5,7 @@
 //! A key's name is the option's long name in snake_case (`--club-speed` ↔ `club_speed`).
 
 use crate::error::InputError;
+use crate::ground::GroundSpec;
 use crate::units::{Quantity, Units};
 use carry_core::aero::AeroModel;
 use carry_core::{PRESETS, Preset};
@@ -109,6 +110,8 @@ pub struct SceneParams {
     pub no_spin_decay: bool,
     /// The aerodynamic model (`None`: the calibrated default).
     pub aero: Option<AeroModel<f64>>,
+    /// The ground after the landing (empty: none).
+    pub ground: GroundSpec,
 }
 
 /// Everything one shot needs (numerics are global, see [`crate::compute::Numerics`]).
@@ -196,6 +199,8 @@ pub enum Kind {
     Aero,
     /// `true`/`false`/`1`/`0`/`yes`/`no`.
     Bool,
+    /// A surface name or a ground file ([`crate::ground`]).
+    Ground,
 }
 
 macro_rules! keys {
@@ -287,6 +292,14 @@ keys! {
     NoLift = "no_lift", Bool, Plain;
     NoSpinDecay = "no_spin_decay", Bool, Plain;
     Aero = "aero", Aero, Plain;
+    Ground = "ground", Ground, Plain;
+    Stimp = "stimp", Number, Plain;
+    GroundSlope = "ground_slope", Number, Plain;
+    GroundSlopeDirection = "ground_slope_direction", Number, Plain;
+    GroundRestitution = "ground_restitution", Number, Plain;
+    GroundFriction = "ground_friction", Number, Plain;
+    RollingResistance = "rolling_resistance", Number, Plain;
+    CraterScale = "crater_scale", Number, Plain;
 }
 
 /// A parsed value.
@@ -304,6 +317,8 @@ pub enum Value {
     Aero(AeroModel<f64>),
     /// A switch.
     Bool(bool),
+    /// A ground (surface and options).
+    Ground(GroundSpec),
 }
 
 impl Key {
@@ -336,6 +351,7 @@ impl Key {
                 .map(Value::Aero)
                 .map_err(err),
             Kind::Bool => parse_bool(text).map(Value::Bool).map_err(err),
+            Kind::Ground => crate::ground::parse(text).map(Value::Ground).map_err(err),
         }
     }
 
@@ -394,6 +410,13 @@ impl Key {
                     Key::WindExponent => s.wind_exponent = Some(x),
                     Key::LandingHeight => s.landing_height_m = Some(x),
                     Key::TimeLimit => s.time_limit_s = Some(x),
+                    Key::Stimp => s.ground.stimp_ft = Some(x),
+                    Key::GroundSlope => s.ground.slope_deg = Some(x),
+                    Key::GroundSlopeDirection => s.ground.slope_direction_deg = Some(x),
+                    Key::GroundRestitution => s.ground.restitution = Some(x),
+                    Key::GroundFriction => s.ground.friction = Some(x),
+                    Key::RollingResistance => s.ground.rolling_resistance = Some(x),
+                    Key::CraterScale => s.ground.crater_scale = Some(x),
                     _ => {}
                 }
             }
@@ -415,6 +438,7 @@ impl Key {
                 Key::NoSpinDecay => s.no_spin_decay = b,
                 _ => {}
             },
+            Value::Ground(g) => s.ground.merge(&g),
         }
     }
 }
