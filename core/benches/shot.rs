@@ -90,6 +90,26 @@ fn full_shot<T: Real>(c: &mut Criterion, label: &str) {
             })
         });
     }
+    // The default fidelity with the seed's aerodynamics (the default scene flies the
+    // calibrated model): what the model choice costs.
+    let seed = Scene::<T> {
+        aero: carry_core::aero::AeroModel::quintavalla(),
+        ..Scene::default()
+    };
+    if let Ok(seed) = seed.prepare(&ball) {
+        group.bench_function("default_seed_aero", |b| {
+            b.iter(|| {
+                shot(
+                    black_box(&club),
+                    black_box(&ball),
+                    black_box(&delivery),
+                    black_box(&seed),
+                    Solver::Reduced,
+                    black_box(&Integrator::default()),
+                )
+            })
+        });
+    }
     group.finish();
 }
 
