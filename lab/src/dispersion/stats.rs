@@ -63,11 +63,16 @@ impl Percentiles {
     }
 }
 
-fn mean(v: impl Iterator<Item = f64>) -> f64 {
-    let (sum, n) = v.fold((0.0, 0_usize), |(s, n), x| (s + x, n + 1));
+/// The mean, shifted by the first value (`x₀ + Σ(xᵢ − x₀)/n`): exact when every value is
+/// the same (zero noise reproduces the single shot bit for bit), and better conditioned.
+fn mean(v: impl Iterator<Item = f64> + Clone) -> f64 {
+    let Some(x0) = v.clone().next() else {
+        return f64::NAN;
+    };
+    let (sum, n) = v.fold((0.0, 0_usize), |(s, n), x| (s + (x - x0), n + 1));
     #[allow(clippy::cast_precision_loss)]
     let n = n.max(1) as f64;
-    sum / n
+    x0 + sum / n
 }
 
 /// The 95 % ellipse of covariance `c` (symmetric 2×2) around `centre`: eigenvalues
