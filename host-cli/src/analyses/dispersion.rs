@@ -27,25 +27,25 @@ fn sd(s: &str) -> Result<f64, String> {
 #[command(next_help_heading = "Noise (standard deviations, default 0)")]
 pub struct NoiseArgs {
     /// Face angle SD [deg].
-    #[arg(long, value_name = "DEG", value_parser = sd, default_value_t = 0.0)]
+    #[arg(long, value_name = "DEG", value_parser = sd, default_value_t = 0.0, allow_hyphen_values = true)]
     pub face_angle_sd: f64,
     /// Club path SD [deg].
-    #[arg(long, value_name = "DEG", value_parser = sd, default_value_t = 0.0)]
+    #[arg(long, value_name = "DEG", value_parser = sd, default_value_t = 0.0, allow_hyphen_values = true)]
     pub club_path_sd: f64,
     /// Attack angle SD [deg].
-    #[arg(long, value_name = "DEG", value_parser = sd, default_value_t = 0.0)]
+    #[arg(long, value_name = "DEG", value_parser = sd, default_value_t = 0.0, allow_hyphen_values = true)]
     pub attack_angle_sd: f64,
     /// Dynamic loft SD [deg].
-    #[arg(long, value_name = "DEG", value_parser = sd, default_value_t = 0.0)]
+    #[arg(long, value_name = "DEG", value_parser = sd, default_value_t = 0.0, allow_hyphen_values = true)]
     pub dynamic_loft_sd: f64,
     /// Club speed SD [m/s | mph].
-    #[arg(long, value_name = "SPEED", value_parser = sd, default_value_t = 0.0)]
+    #[arg(long, value_name = "SPEED", value_parser = sd, default_value_t = 0.0, allow_hyphen_values = true)]
     pub club_speed_sd: f64,
     /// Impact height SD [m | in].
-    #[arg(long, value_name = "LEN", value_parser = sd, default_value_t = 0.0)]
+    #[arg(long, value_name = "LEN", value_parser = sd, default_value_t = 0.0, allow_hyphen_values = true)]
     pub impact_height_sd: f64,
     /// Impact toe SD [m | in].
-    #[arg(long, value_name = "LEN", value_parser = sd, default_value_t = 0.0)]
+    #[arg(long, value_name = "LEN", value_parser = sd, default_value_t = 0.0, allow_hyphen_values = true)]
     pub impact_toe_sd: f64,
 }
 

@@ -1,5 +1,6 @@
 //! Output helpers of the lab commands: JSON, and CSV flattened from the JSON (nested keys
-//! joined with `_`, arrays indexed `_0`, `_1`, … or `_x`, `_y`, `_z` for three-vectors).
+//! joined with `_`, arrays indexed `_0`, `_1`, … or `_x`, `_y`, `_z` for three-vectors;
+//! columns in alphabetical order of the flattened keys).
 
 use crate::error::Failure;
 use serde::Serialize;
