@@ -121,3 +121,39 @@ fn works_in_f32() {
     // f32 reaches the same optimum as f64 to within the flatness of the objective.
     assert!((best.objective_value - f64_best.objective_value).abs() < 0.1);
 }
+
+mod properties {
+    use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(12))]
+
+        /// Any bounds: the optimum lies inside them and carries at least as far as the
+        /// centre of the box (where the first start begins).
+        #[test]
+        fn optimum_is_inside_and_no_worse_than_the_centre(
+            loft_lo in 4.0..16.0f64, loft_w in 0.0..10.0f64,
+            attack_lo in -6.0..3.0f64, attack_w in 0.0..6.0f64,
+        ) {
+            let setup = driver();
+            let options = Options::carry(
+                range(loft_lo, loft_lo + loft_w),
+                range(attack_lo, attack_lo + attack_w),
+            );
+            let Ok(best) = optimize(&setup, &options) else {
+                return Err(TestCaseError::fail("optimize failed"));
+            };
+            let p = best.point;
+            prop_assert!(p.dynamic_loft_deg >= loft_lo && p.dynamic_loft_deg <= loft_lo + loft_w);
+            prop_assert!(p.attack_angle_deg >= attack_lo && p.attack_angle_deg <= attack_lo + attack_w);
+            let mut centre = setup.delivery;
+            centre.dynamic_loft_rad = carry_core::units::deg(loft_lo + 0.5 * loft_w);
+            centre.attack_angle_rad = carry_core::units::deg(attack_lo + 0.5 * attack_w);
+            let Ok(c) = setup.play(&centre) else {
+                return Err(TestCaseError::fail("centre failed"));
+            };
+            prop_assert!(best.objective_value >= c.flight.carry_m - 1e-9);
+        }
+    }
+}

@@ -162,3 +162,24 @@ fn shipped_example_is_the_generators_output() {
     let shipped = std::fs::read_to_string(path).unwrap_or_default();
     assert!(shipped == text, "{path} is stale: regenerate it");
 }
+
+mod properties {
+    use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        /// Ball positions: ordered, evenly stepped, inside [from, to], and the count the
+        /// step implies.
+        #[test]
+        fn positions_are_a_grid(from in -1.0..1.0f64, width in 0.0..1.0f64, step in 1e-3..0.5f64) {
+            let Ok(xs) = positions(from, from + width, step) else {
+                return Err(TestCaseError::fail("rejected"));
+            };
+            prop_assert!(!xs.is_empty());
+            prop_assert_eq!(xs[0], from);
+            prop_assert!(xs.iter().all(|&x| x <= from + width + 1e-9 * (1.0 + width)));
+            prop_assert!(xs.windows(2).all(|w| ((w[1] - w[0]) - step).abs() < 1e-9));
+            prop_assert!(xs.last().is_some_and(|&x| x + step > from + width - 1e-9));
+        }
+    }
+}
