@@ -3,8 +3,11 @@
 //! CSV through `carry batch`'s reader, column mapping, per-row validation and formatting.
 //! A bad input must come back as an error (status 2 / an error row), never a panic.
 //!
-//! Byte 0 picks the harness: even → arguments (NUL-separated, lossy UTF-8), odd → CSV
-//! (byte 1 picks impact/flight/shot and CSV or JSON lines). Arguments that read files
+//! Byte 0 picks the harness: even → arguments (NUL-separated, lossy UTF-8), 7 mod 8 → a
+//! swing file for `carry sweep` (the lab's CSV reader and contact search), other odd → CSV
+//! (byte 1 picks impact/flight/shot and CSV or JSON lines). The lab commands (`optimize`,
+//! `sweep`, `dispersion`, `normalize`) run too, with their work capped (shots, starts,
+//! chart and sweep sizes) so an input stays fast. Arguments that read files
 //! (`--scene`, `--input`) or write them (`plot`, `bench`) are skipped: they are I/O, not
 //! parsing.
 #![no_main]
@@ -22,6 +25,8 @@ fuzz_target!(|data: &[u8]| {
     };
     if selector % 2 == 0 {
         arguments(rest);
+    } else if selector % 8 == 7 {
+        swing_file(rest);
     } else {
         csv_rows(rest);
     }
@@ -29,15 +34,12 @@ fuzz_target!(|data: &[u8]| {
 
 fn arguments(bytes: &[u8]) {
     let mut args = vec!["carry".to_owned()];
-    args.extend(
-        bytes
-            .split(|&b| b == 0)
-            .map(|a| String::from_utf8_lossy(a).into_owned()),
-    );
-    if args
-        .iter()
-        .any(|a| a.contains("--scene") || a.contains("--input") || a.contains("--output"))
-    {
+    args.extend(bytes.split(|&b| b == 0).map(|a| String::from_utf8_lossy(a).into_owned()));
+    if args.iter().any(|a| {
+        ["--scene", "--input", "--output", "--svg", "--swing", "--generate"]
+            .iter()
+            .any(|f| a.contains(f))
+    }) {
         return;
     }
     let Ok(cli) = Cli::try_parse_from(&args) else {
@@ -47,6 +49,29 @@ fn arguments(bytes: &[u8]) {
         Command::Impact(c) => c.resolve().map(|r| (Mode::Impact, r)),
         Command::Flight(c) => c.resolve().map(|r| (Mode::Flight, r)),
         Command::Shot(c) => c.resolve().map(|r| (Mode::Shot, r)),
+        Command::Optimize(c) => {
+            let s = &c.search;
+            if s.starts <= 3 && c.monte_carlo.shots.unwrap_or(0) <= 64 && !s.chart {
+                let _ = c.run();
+            }
+            return;
+        }
+        Command::Dispersion(c) => {
+            if c.monte_carlo.shots.is_some_and(|n| n <= 256) {
+                let _ = c.run();
+            }
+            return;
+        }
+        Command::Normalize(c) => {
+            let _ = c.run();
+            return;
+        }
+        Command::Sweep(c) => {
+            if c.ball_positions.is_some_and(|[a, b, step]| (b - a) / step <= 50.0) {
+                let _ = c.run();
+            }
+            return;
+        }
         _ => return,
     };
     if let Ok((mode, (params, numerics))) = resolved {
@@ -93,5 +118,15 @@ fn csv_rows(bytes: &[u8]) {
     let mut out = Vec::new();
     if let Ok((rows, errors)) = batch::run_bytes(&job, csv, &mut out) {
         assert!(errors <= rows, "{errors} error rows of {rows}");
+    }
+}
+
+/// A swing file: the lab's reader, then a short sweep on the default setup.
+fn swing_file(bytes: &[u8]) {
+    let Ok(setup) = carry_lab::Setup::<f64>::standard(&carry_core::PRESETS[0], 45.0) else {
+        return;
+    };
+    if let Ok(motion) = carry_lab::sweep::Motion::from_csv(bytes, setup.club.loft_rad()) {
+        let _ = carry_lab::sweep::sweep(&setup, &motion, &[-0.05, 0.0, 0.05]);
     }
 }

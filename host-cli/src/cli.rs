@@ -64,6 +64,19 @@ pub enum Command {
     /// leave-one-out errors; `--output` writes the model for `--aero FILE.toml`.
     #[command(after_help = crate::fit::AFTER_HELP)]
     Fit(crate::fit::FitCmd),
+    /// The dynamic loft, attack angle (and impact height) that carry furthest; --chart for
+    /// the optimizer chart (club speed × attack angle → best dynamic loft).
+    #[command(after_help = AFTER_HELP)]
+    Optimize(Box<crate::analyses::optimize::OptimizeCmd>),
+    /// A club-head motion through impact (CSV) against ball positions along the target line.
+    #[command(after_help = AFTER_HELP)]
+    Sweep(Box<crate::analyses::sweep::SweepCmd>),
+    /// Monte-Carlo over delivery noise: landing mean, covariance, 95 % ellipse, percentiles.
+    #[command(after_help = AFTER_HELP)]
+    Dispersion(Box<crate::analyses::dispersion::DispersionCmd>),
+    /// A launch's carry in standard conditions (sea level, 21 °C, 50 % RH, no wind), and back.
+    #[command(after_help = AFTER_HELP)]
+    Normalize(Box<crate::analyses::normalize::NormalizeCmd>),
 }
 
 fn finite(s: &str) -> Result<f64, String> {

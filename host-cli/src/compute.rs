@@ -2,7 +2,7 @@
 //! [`Report`] in `f64`. The same generic code serves `--precision f32` and `f64`.
 
 use crate::error::InputError;
-use crate::params::{ClubParams, DEFAULT_BACKSPIN_RPM, Params};
+use crate::params::{ClubParams, DEFAULT_BACKSPIN_RPM, DeliveryParams, Params};
 use crate::report::{ClubAfter, FlightReport, GroundReport, LaunchReport, Report};
 use carry_core::flight::{Integrator, Recorder, Sample};
 use carry_core::impact::{self, Solver};
@@ -91,14 +91,18 @@ impl Numerics {
         Ok(())
     }
 
-    fn solver(&self) -> Solver {
+    /// The core impact solver.
+    #[must_use]
+    pub fn solver(&self) -> Solver {
         match self.solver {
             SolverChoice::Reduced => Solver::Reduced,
             SolverChoice::Full => Solver::FULL,
         }
     }
 
-    fn integrator<T: Real>(&self) -> Integrator<T> {
+    /// The core flight integrator in precision `T`.
+    #[must_use]
+    pub fn integrator<T: Real>(&self) -> Integrator<T> {
         match self.integrator {
             IntegratorChoice::Euler => Integrator::Euler {
                 step_s: lit(self.step_s.unwrap_or(DEFAULT_FIXED_STEP_S)),
@@ -169,19 +173,18 @@ pub fn club_spec<T: Real>(c: &ClubParams) -> ClubSpec<T> {
     spec
 }
 
-fn ball<T: Real>(p: &Params) -> Result<Ball<T>, InputError> {
+/// The ball of `p`, validated.
+///
+/// # Errors
+/// The core's validation, naming the ball option.
+pub fn ball<T: Real>(p: &Params) -> Result<Ball<T>, InputError> {
     Ball::new(lit(p.ball_mass_kg), lit(p.ball_radius_m)).map_err(InputError::from)
 }
 
-/// The impact of `p` in precision `T`.
-fn solve_impact<T: Real>(
-    p: &Params,
-    n: &Numerics,
-    ball: &Ball<T>,
-) -> Result<carry_core::ImpactOutcome<T>, InputError> {
-    let head = club::<T>(&p.club)?;
-    let d = &p.delivery;
-    let delivery = Delivery {
+/// The core delivery of `d` (degrees → radians; dynamic loft defaults to the static loft).
+#[must_use]
+pub fn delivery<T: Real>(d: &DeliveryParams, head: &ClubHead<T>) -> Delivery<T> {
+    Delivery {
         club_speed_mps: lit(d.club_speed_mps),
         attack_angle_rad: deg(lit(d.attack_angle_deg)),
         club_path_rad: deg(lit(d.club_path_deg)),
@@ -193,7 +196,18 @@ fn solve_impact<T: Real>(
             height_m: lit(d.impact_height_m),
             toe_m: lit(d.impact_toe_m),
         },
-    };
+    }
+}
+
+/// The impact of `p` in precision `T`.
+fn solve_impact<T: Real>(
+    p: &Params,
+    n: &Numerics,
+    ball: &Ball<T>,
+) -> Result<carry_core::ImpactOutcome<T>, InputError> {
+    let head = club::<T>(&p.club)?;
+    let d = &p.delivery;
+    let delivery = delivery::<T>(d, &head);
     let strike = delivery.strike(&head)?;
     impact::solve(&head, ball, &strike, n.solver()).map_err(|e| {
         if e == carry_core::Error::NoApproach
@@ -230,7 +244,10 @@ fn launch_report<T: Real>(
 }
 
 /// The launch a flight starts from (launch-monitor terms → ball motion).
-fn launch_motion<T: Real>(p: &Params) -> Result<(BallMotion<T>, LaunchReport), InputError> {
+///
+/// # Errors
+/// Conflicting spin options or an invalid launch.
+pub fn launch_motion<T: Real>(p: &Params) -> Result<(BallMotion<T>, LaunchReport), InputError> {
     let l = &p.launch;
     let axis_form = l.spin_rpm.is_some() || l.spin_axis_deg.is_some();
     let launch = if axis_form {

@@ -6,6 +6,7 @@
 // Internal modules of an application, documented where it matters to their readers.
 #![allow(missing_docs)]
 
+pub mod analyses;
 pub mod batch;
 pub mod cli;
 pub mod clubs;
@@ -209,6 +210,10 @@ fn dispatch(cli: Cli) -> Result<(), Failure> {
             }
             .as_bytes(),
         ),
+        Command::Optimize(c) => write_stdout(c.run()?.as_bytes()),
+        Command::Sweep(c) => write_stdout(c.run()?.as_bytes()),
+        Command::Dispersion(c) => write_stdout(c.run()?.as_bytes()),
+        Command::Normalize(c) => write_stdout(c.run()?.as_bytes()),
         Command::Bench(BenchCmd::Accuracy {
             json,
             svg,

@@ -15,7 +15,11 @@ use plotters::prelude::*;
 
 fn errors(f: &Fit, row: usize, loo: bool) -> [f64; 3] {
     let r = &f.rows[row];
-    let p = if loo { r.loo_predicted.as_ref().unwrap_or(&r.predicted) } else { &r.predicted };
+    let p = if loo {
+        r.loo_predicted.as_ref().unwrap_or(&r.predicted)
+    } else {
+        &r.predicted
+    };
     let o = |i: usize| r.observed[i].unwrap_or(f64::NAN);
     [
         100.0 * (p[0] - o(0)) / o(0),
@@ -25,7 +29,9 @@ fn errors(f: &Fit, row: usize, loo: bool) -> [f64; 3] {
 }
 
 fn main() {
-    let svg = std::env::args().nth(1).unwrap_or_else(|| "aero-coefficients.svg".into());
+    let svg = std::env::args()
+        .nth(1)
+        .unwrap_or_else(|| "aero-coefficients.svg".into());
     let rows = common::tour_2023().expect("../shared/data/trackman_tour_2023.csv");
     let seed = fit::evaluate(
         &AeroProblem::new(AeroFamily::Quintavalla),
@@ -36,15 +42,27 @@ fn main() {
     )
     .expect("seed");
     let t = std::time::Instant::now();
-    let refit = fit::fit(&AeroProblem::new(AeroFamily::Quintavalla), &rows, FitOptions::default(), &|| {})
-        .expect("refit");
+    let refit = fit::fit(
+        &AeroProblem::new(AeroFamily::Quintavalla),
+        &rows,
+        FitOptions::default(),
+        &|| {},
+    )
+    .expect("refit");
     let t_refit = t.elapsed();
     let t = std::time::Instant::now();
-    let modern = fit::fit(&AeroProblem::new(AeroFamily::Modern), &rows, FitOptions::default(), &|| {})
-        .expect("modern");
+    let modern = fit::fit(
+        &AeroProblem::new(AeroFamily::Modern),
+        &rows,
+        FitOptions::default(),
+        &|| {},
+    )
+    .expect("modern");
     let t_modern = t.elapsed();
     println!("fit + leave-one-out wall time: refit {t_refit:.2?}, modern {t_modern:.2?}\n");
-    println!("| club | seed carry % | refit carry % (LOO) | tour2023 carry % (LOO) | seed / refit / tour2023 apex yd | seed / refit / tour2023 land ° |");
+    println!(
+        "| club | seed carry % | refit carry % (LOO) | tour2023 carry % (LOO) | seed / refit / tour2023 apex yd | seed / refit / tour2023 land ° |"
+    );
     println!("|---|---:|---:|---:|---:|---:|");
     for (i, r) in rows.iter().enumerate() {
         let (s, q, ql, m, ml) = (
@@ -59,9 +77,15 @@ fn main() {
             r.label, s[0], q[0], ql[0], m[0], ml[0], s[1], q[1], m[1], s[2], q[2], m[2]
         );
     }
-    println!("\n| model | carry mean % | carry max % | LOO carry mean % | LOO carry max % | apex mean yd | LOO apex yd | land mean ° | LOO land ° |");
+    println!(
+        "\n| model | carry mean % | carry max % | LOO carry mean % | LOO carry max % | apex mean yd | LOO apex yd | land mean ° | LOO land ° |"
+    );
     println!("|---|---:|---:|---:|---:|---:|---:|---:|---:|");
-    for (name, f) in [("seed (quintavalla)", &seed), ("quintavalla family refitted", &refit), ("tour2023 (modern family)", &modern)] {
+    for (name, f) in [
+        ("seed (quintavalla)", &seed),
+        ("quintavalla family refitted", &refit),
+        ("tour2023 (modern family)", &modern),
+    ] {
         let s = |q: &str| *f.summary_of(q).expect("q");
         let l = |q: &str| f.loo_summary_of(q).copied();
         let lc = l("carry");
@@ -91,10 +115,30 @@ fn draw(path: &str, refit: &AeroModel<f64>) -> Result<(), Box<dyn std::error::Er
     let (left, right) = root.split_horizontally(500);
     let s_grid: Vec<f64> = (0..=60).map(|i| f64::from(i) * 0.01).collect();
     let models: [(&str, AeroModel<f64>, f64, RGBColor); 4] = [
-        ("seed (Quintavalla), Re 1.5e5", AeroModel::quintavalla(), 1.5e5, RGBColor(200, 60, 40)),
-        ("Quintavalla family refitted", *refit, 1.5e5, RGBColor(230, 150, 30)),
-        ("tour2023, Re 1.5e5", AeroModel::tour_2023(), 1.5e5, RGBColor(30, 90, 200)),
-        ("tour2023, Re 7e4", AeroModel::tour_2023(), 7.0e4, RGBColor(120, 170, 240)),
+        (
+            "seed (Quintavalla), Re 1.5e5",
+            AeroModel::quintavalla(),
+            1.5e5,
+            RGBColor(200, 60, 40),
+        ),
+        (
+            "Quintavalla family refitted",
+            *refit,
+            1.5e5,
+            RGBColor(230, 150, 30),
+        ),
+        (
+            "tour2023, Re 1.5e5",
+            AeroModel::tour_2023(),
+            1.5e5,
+            RGBColor(30, 90, 200),
+        ),
+        (
+            "tour2023, Re 7e4",
+            AeroModel::tour_2023(),
+            7.0e4,
+            RGBColor(120, 170, 240),
+        ),
     ];
     for (area, title, pick, top) in [
         (&left, "drag coefficient C_D(S)", 0usize, 0.7),
@@ -120,7 +164,9 @@ fn draw(path: &str, refit: &AeroModel<f64>) -> Result<(), Box<dyn std::error::Er
                     color.stroke_width(2),
                 ))?
                 .label(*name)
-                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], color.stroke_width(2)));
+                .legend(move |(x, y)| {
+                    PathElement::new(vec![(x, y), (x + 18, y)], color.stroke_width(2))
+                });
         }
         // Nathan's calculator (REFERENCES.md): C_L = 0.2294·S^0.4, C_D = C_D0 + 0.2087·S
         // above the drag crisis (C_D0 ≈ 0.18 assumed for the curve).
@@ -128,7 +174,14 @@ fn draw(path: &str, refit: &AeroModel<f64>) -> Result<(), Box<dyn std::error::Er
         chart
             .draw_series(DashedLineSeries::new(
                 s_grid.iter().map(|&s| {
-                    (s, if pick == 0 { 0.18 + 0.2087 * s } else { 0.2294 * s.powf(0.4) })
+                    (
+                        s,
+                        if pick == 0 {
+                            0.18 + 0.2087 * s
+                        } else {
+                            0.2294 * s.powf(0.4)
+                        },
+                    )
                 }),
                 6,
                 4,

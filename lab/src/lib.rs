@@ -6,11 +6,26 @@
 //!   precisions, impact solvers and integrators measured against each other.
 //! * [`fit`]: fitting model coefficients to measured data (`carry fit`), with
 //!   leave-one-out cross-validation; [`aero_file`] reads and writes fitted models.
+//! * [`optimize`]: the delivery (dynamic loft, attack angle, impact height) that maximises
+//!   carry within bounds (argmin), and the TrackMan-style optimizer chart.
+//! * [`sweep`]: a club-head motion through impact (sampled in time) against a range of ball
+//!   positions; the example swing's generator (a planar double pendulum).
+//! * [`dispersion`]: Monte-Carlo over delivery noise, landing statistics and ellipse.
+//! * [`normalize`]: the carry of a launch in standard conditions, and back.
 //!
 //! The command line (`carry-cli`) is a thin shell over this crate: it parses, calls, and
 //! formats; every analysis returns data (and renders tables or charts on request) rather
-//! than printing.
+//! than printing. docs/optimize.md has the measured figures.
 
 pub mod aero_file;
+pub mod dispersion;
+pub mod error;
 pub mod fit;
+pub mod normalize;
+pub mod optimize;
+pub mod setup;
 pub mod study;
+pub mod sweep;
+
+pub use error::{Error, Input, Result};
+pub use setup::{Setup, ShotSummary};

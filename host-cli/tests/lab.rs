@@ -1,0 +1,322 @@
+//! End-to-end tests of the lab commands: optimize, sweep, dispersion, normalize — JSON
+//! names, self-consistency with `carry shot`, and one-line errors with status 2.
+
+use assert_cmd::Command;
+use serde_json::Value;
+
+struct Run {
+    code: i32,
+    stdout: String,
+    stderr: String,
+}
+
+fn run(args: &[&str]) -> Run {
+    let out = Command::cargo_bin("carry")
+        .expect("the carry binary is built")
+        .args(args)
+        .output()
+        .expect("carry runs");
+    Run {
+        code: out.status.code().unwrap_or(-1),
+        stdout: String::from_utf8_lossy(&out.stdout).into_owned(),
+        stderr: String::from_utf8_lossy(&out.stderr).into_owned(),
+    }
+}
+
+fn json(args: &[&str]) -> Value {
+    let r = run(args);
+    assert_eq!(r.code, 0, "carry {args:?} failed: {}", r.stderr);
+    serde_json::from_str(&r.stdout).expect("stdout is JSON")
+}
+
+fn num(v: &Value) -> f64 {
+    v.as_f64().unwrap_or_else(|| panic!("not a number: {v}"))
+}
+
+/// One line on stderr naming `option`, status 2, nothing on stdout.
+fn rejects(args: &[&str], option: &str) {
+    let r = run(args);
+    assert_eq!(r.code, 2, "carry {args:?}: {}", r.stderr);
+    assert_eq!(r.stderr.lines().count(), 1, "{}", r.stderr);
+    assert!(r.stderr.starts_with("carry: "), "{}", r.stderr);
+    assert!(r.stderr.contains(option), "{} lacks {option}", r.stderr);
+    assert!(r.stdout.is_empty());
+}
+
+#[test]
+fn optimize_reports_the_optimum_it_plays() {
+    let v = json(&[
+        "optimize",
+        "--dynamic-loft-range",
+        "8,20",
+        "--attack-angle-range",
+        "-3,3",
+        "--json",
+    ]);
+    let loft = num(&v["dynamic_loft_deg"]);
+    let attack = num(&v["attack_angle_deg"]);
+    assert!((8.0..=20.0).contains(&loft) && (-3.0..=3.0).contains(&attack));
+    assert!(v["evaluations"].as_u64().unwrap_or(0) > 0);
+    assert_eq!(v["flatness"].as_array().map(Vec::len), Some(2));
+    // `carry shot` with the optimum carries as far (the optimizer's tighter flight
+    // tolerance agrees with the default to ~1 mm).
+    let (l, a) = (loft.to_string(), attack.to_string());
+    let shot = json(&["shot", "--dynamic-loft", &l, "--attack-angle", &a, "--json"]);
+    assert!((num(&shot["flight"]["carry_m"]) - num(&v["shot"]["carry_m"])).abs() < 0.01);
+    // A square delivery at the static loft carries less.
+    let square = json(&["shot", "--json"]);
+    assert!(num(&square["flight"]["carry_m"]) <= num(&v["shot"]["carry_m"]));
+}
+
+#[test]
+fn optimize_csv_chart_and_svg() {
+    let r = run(&["optimize", "--csv"]);
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    assert_eq!(r.stdout.lines().count(), 2);
+    // Columns: the JSON keys flattened, in alphabetical order.
+    let header: Vec<&str> = r.stdout.lines().next().unwrap_or("").split(',').collect();
+    assert!(header.contains(&"dynamic_loft_deg") && header.contains(&"carry_m"));
+    assert!(header.windows(2).all(|w| w[0] < w[1]));
+    let dir = std::env::temp_dir().join(format!("carry-lab-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let svg = dir.join("chart.svg");
+    let svg_s = svg.to_string_lossy().into_owned();
+    let r = run(&[
+        "optimize",
+        "--chart",
+        "--club-speeds",
+        "40,45,5",
+        "--attack-angles",
+        "-2,2,2",
+        "--csv",
+        "--svg",
+        &svg_s,
+    ]);
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    assert_eq!(r.stdout.lines().count(), 1 + 2 * 3);
+    assert!(
+        std::fs::read_to_string(&svg)
+            .unwrap_or_default()
+            .contains("<svg")
+    );
+    // The best loft falls as the attack angle rises (less spin loft needed)? Not asserted:
+    // model-dependent. Every cell carries further at the higher speed.
+    let v = json(&[
+        "optimize",
+        "--chart",
+        "--club-speeds",
+        "40,45,5",
+        "--attack-angles",
+        "0,0,1",
+        "--json",
+    ]);
+    let cells = v["cells"].as_array().cloned().unwrap_or_default();
+    assert_eq!(cells.len(), 2);
+    assert!(num(&cells[1]["carry_m"]) > num(&cells[0]["carry_m"]));
+}
+
+#[test]
+fn dispersion_json_and_zero_noise() {
+    let v = json(&[
+        "dispersion",
+        "--shots",
+        "500",
+        "--face-angle-sd",
+        "1",
+        "--club-path-sd",
+        "1",
+        "--json",
+    ]);
+    for key in ["carry_mean_m", "carry_sd_m", "side_mean_m", "side_sd_m"] {
+        assert!(num(&v[key]).is_finite(), "{key}");
+    }
+    let c = &v["covariance_m2"];
+    assert!((num(&c[1][1]).sqrt() - num(&v["side_sd_m"])).abs() < 1e-9);
+    assert!(num(&v["ellipse_95"]["semi_major_m"]) > 0.0);
+    // Zero noise: exactly the single shot.
+    let z = json(&["dispersion", "--shots", "10", "--json"]);
+    let shot = json(&["shot", "--json"]);
+    assert_eq!(num(&z["carry_mean_m"]), num(&shot["flight"]["carry_m"]));
+    assert_eq!(num(&z["carry_sd_m"]), 0.0);
+    // Same seed, same result; another seed, another.
+    let a = json(&[
+        "dispersion",
+        "--shots",
+        "200",
+        "--face-angle-sd",
+        "1",
+        "--seed",
+        "5",
+        "--json",
+        "--threads",
+        "1",
+    ]);
+    let b = json(&[
+        "dispersion",
+        "--shots",
+        "200",
+        "--face-angle-sd",
+        "1",
+        "--seed",
+        "5",
+        "--json",
+        "--threads",
+        "2",
+    ]);
+    let c = json(&[
+        "dispersion",
+        "--shots",
+        "200",
+        "--face-angle-sd",
+        "1",
+        "--seed",
+        "6",
+        "--json",
+    ]);
+    assert_eq!(a, b);
+    assert_ne!(a["side_sd_m"], c["side_sd_m"]);
+}
+
+#[test]
+fn sweep_runs_on_the_example_and_writes_a_plot() {
+    let dir = std::env::temp_dir().join(format!("carry-sweep-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let svg = dir.join("sweep.svg").to_string_lossy().into_owned();
+    let v = json(&[
+        "sweep",
+        "--ball-positions",
+        "-0.05,0.05,0.025",
+        "--json",
+        "--svg",
+        &svg,
+    ]);
+    let rows = v["rows"].as_array().cloned().unwrap_or_default();
+    assert_eq!(rows.len(), 5);
+    assert!(v["best"].as_u64().is_some());
+    assert!(
+        rows.iter()
+            .all(|r| r["carry_m"].is_number() && r["attack_angle_deg"].is_number())
+    );
+    // --generate writes the shipped example back, and --swing reads it.
+    let file = dir.join("swing.csv").to_string_lossy().into_owned();
+    let r = run(&["sweep", "--generate", &file]);
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    let w = json(&[
+        "sweep",
+        "--swing",
+        &file,
+        "--ball-positions",
+        "-0.05,0.05,0.025",
+        "--json",
+    ]);
+    assert_eq!(w, v);
+    // Imperial ball positions in inches.
+    let r = run(&["sweep", "--units", "imperial", "--ball-positions", "-2,2,1"]);
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    assert!(r.stdout.contains("ball in") && r.stdout.contains("best"));
+}
+
+#[test]
+fn normalize_both_ways() {
+    let a = json(&[
+        "normalize",
+        "--altitude",
+        "1600",
+        "--temperature",
+        "30",
+        "--json",
+    ]);
+    let b = json(&[
+        "normalize",
+        "--altitude",
+        "1600",
+        "--temperature",
+        "30",
+        "--to",
+        "conditions",
+        "--json",
+    ]);
+    assert!(num(&a["carry_change_m"]) < 0.0);
+    assert_eq!(a["from"], b["to"]);
+    assert_eq!(a["to"], b["from"]);
+    assert!((num(&b["carry_m"]) - num(&a["from"]["carry_m"])).abs() < 1e-12);
+}
+
+#[test]
+fn bad_input_is_one_line_and_status_2() {
+    rejects(
+        &["optimize", "--dynamic-loft-range", "20,8"],
+        "--dynamic-loft-range",
+    );
+    rejects(
+        &["optimize", "--attack-angle-range", "3,-3"],
+        "--attack-angle-range",
+    );
+    rejects(
+        &["optimize", "--impact-height-range", "0.01,-0.01"],
+        "--impact-height-range",
+    );
+    rejects(
+        &["optimize", "--dynamic-loft-range", "8"],
+        "--dynamic-loft-range",
+    );
+    rejects(&["optimize", "--objective", "total"], "--objective");
+    rejects(&["optimize", "--objective", "dispersion"], "--objective");
+    rejects(&["optimize", "--starts", "0"], "--starts");
+    rejects(&["dispersion", "--face-angle-sd", "-1"], "--face-angle-sd");
+    rejects(&["dispersion", "--shots", "1"], "--shots");
+    rejects(
+        &["sweep", "--ball-positions", "0.1,-0.1,0.01"],
+        "--ball-positions",
+    );
+    rejects(
+        &["sweep", "--ball-positions", "5,6,0.5"],
+        "--ball-positions",
+    );
+    rejects(&["sweep", "--swing", "/nonexistent/swing.csv"], "--swing");
+    rejects(&["normalize", "--to", "mars"], "--to");
+    let dir = std::env::temp_dir().join(format!("carry-bad-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let bad = [
+        (
+            "nonunit.csv",
+            "t_s,x_m,y_m,z_m,qw,qx,qy,qz\n0,-0.1,0,0,1,0,0,0\n0.001,-0.05,0,0,0.8,0,0,0\n0.002,0,0,0,1,0,0,0\n",
+        ),
+        (
+            "backwards.csv",
+            "t_s,x_m,y_m,z_m,qw,qx,qy,qz\n0,-0.1,0,0,1,0,0,0\n0.002,-0.05,0,0,1,0,0,0\n0.001,0,0,0,1,0,0,0\n",
+        ),
+        (
+            "short.csv",
+            "t_s,x_m,y_m,z_m,qw,qx,qy,qz\n0,-0.6,0,0,1,0,0,0\n0.001,-0.55,0,0,1,0,0,0\n0.002,-0.5,0,0,1,0,0,0\n",
+        ),
+    ];
+    for (name, text) in bad {
+        let path = dir.join(name);
+        std::fs::write(&path, text).expect("write");
+        let p = path.to_string_lossy().into_owned();
+        let option = if name == "short.csv" {
+            "--ball-positions"
+        } else {
+            "--swing"
+        };
+        rejects(
+            &["sweep", "--swing", &p, "--ball-positions", "0,0,1"],
+            option,
+        );
+    }
+}
+
+#[test]
+fn help_names_the_options() {
+    for (cmd, option) in [
+        ("optimize", "--dynamic-loft-range"),
+        ("sweep", "--ball-positions"),
+        ("dispersion", "--impact-toe-sd"),
+        ("normalize", "--to"),
+    ] {
+        let r = run(&[cmd, "--help"]);
+        assert_eq!(r.code, 0);
+        assert!(r.stdout.contains(option), "{cmd} --help lacks {option}");
+    }
+}
