@@ -34,11 +34,22 @@ fuzz_target!(|data: &[u8]| {
 
 fn arguments(bytes: &[u8]) {
     let mut args = vec!["carry".to_owned()];
-    args.extend(bytes.split(|&b| b == 0).map(|a| String::from_utf8_lossy(a).into_owned()));
+    args.extend(
+        bytes
+            .split(|&b| b == 0)
+            .map(|a| String::from_utf8_lossy(a).into_owned()),
+    );
     if args.iter().any(|a| {
-        ["--scene", "--input", "--output", "--svg", "--swing", "--generate"]
-            .iter()
-            .any(|f| a.contains(f))
+        [
+            "--scene",
+            "--input",
+            "--output",
+            "--svg",
+            "--swing",
+            "--generate",
+        ]
+        .iter()
+        .any(|f| a.contains(f))
     }) {
         return;
     }
@@ -67,7 +78,9 @@ fn arguments(bytes: &[u8]) {
             return;
         }
         Command::Sweep(c) => {
-            if c.ball_positions.is_some_and(|[a, b, step]| (b - a) / step <= 50.0) {
+            if c.ball_positions
+                .is_some_and(|[a, b, step]| (b - a) / step <= 50.0)
+            {
                 let _ = c.run();
             }
             return;

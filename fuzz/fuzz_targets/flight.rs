@@ -1,5 +1,5 @@
 //! Fuzz the flight entry points: launch → ball motion, scene preparation (density, weather,
-//! wind), and every integrator, in f32 and f64. A success must be finite and physical.
+//! wind, aerodynamic model and coefficients), and every integrator, in f32 and f64. A success must be finite and physical.
 //!
 //! The only inputs bounded beyond validation are the *work* a flight may take: a fixed
 //! step or a maximum adaptive step below `time limit / 2e5` would take more than 2e5 steps
@@ -8,6 +8,7 @@
 // `!(a < b)` is the NaN-aware test on purpose.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
+use carry_core::aero::{AeroModel, LinearAero, ModernAero};
 use carry_core::air::{Air, Pressure, Weather};
 use carry_core::flight::{Integrator, Recorder, Sample};
 use carry_core::real::{lit, to_f64};
@@ -56,7 +57,7 @@ fn run<T: Real>(b: &mut Bytes<'_>) -> Result<()> {
         },
     };
     let time_limit = b.param(0.1, 60.0);
-    let scene = Scene::<T> {
+    let mut scene = Scene::<T> {
         effects: Effects {
             drag: b.flag(),
             lift: b.flag(),
@@ -69,6 +70,7 @@ fn run<T: Real>(b: &mut Bytes<'_>) -> Result<()> {
         gravity_mps2: lit(b.param(0.0, 20.0)),
         launch_position_m: v(b.vec3(-5.0, 5.0)),
         ground: None,
+        aero: AeroModel::default(),
     };
     let min_step = time_limit / MAX_STEPS;
     let integrator = match b.byte() % 3 {
@@ -114,6 +116,24 @@ fn run<T: Real>(b: &mut Bytes<'_>) -> Result<()> {
         Recorder::new(lit(interval), &mut buffer).ok()
     } else {
         None
+    };
+    // The aerodynamic model: the two built-in ones, or arbitrary coefficients of either
+    // family (absurd ones must be named errors from `prepare`).
+    scene.aero = match b.byte() % 4 {
+        0 => AeroModel::quintavalla(),
+        1 => AeroModel::tour_2023(),
+        2 => AeroModel::Linear(LinearAero::from_array(
+            [0; 5].map(|_| lit(b.param(-0.5, 12.0))),
+        )),
+        _ => AeroModel::Modern(ModernAero {
+            cd_supercritical: lit(b.param(-0.1, 2.5)),
+            cd_subcritical: lit(b.param(-0.1, 2.5)),
+            reynolds_critical: lit(b.param(0.0, 2e7)),
+            cd_spin: lit(b.param(-0.5, 12.0)),
+            cl_max: lit(b.param(-0.1, 2.5)),
+            cl_half_spin: lit(b.param(-0.1, 12.0)),
+            cm_spin: lit(b.param(-0.01, 1.5)),
+        }),
     };
     let prepared = scene.prepare(&ball)?;
     // Work bound 2: the drag scale ρR²/m (golf: 0.012 /m). Far above it (a 1e300 kg/m³
