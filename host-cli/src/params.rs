@@ -408,7 +408,7 @@ impl Key {
 }
 
 fn preset_cg(p: &Preset) -> [f64; 3] {
-    [p.cg_to_face_m, 0.0, 0.0]
+    p.cg_to_face_m
 }
 
 /// A finite number.

@@ -2,7 +2,9 @@
 
 use carry_core::real::lit;
 use carry_core::units::deg;
-use carry_core::{Ball, ClubHead, ClubSpec, Delivery, FaceLocation, PRESETS, Real, Strike};
+use carry_core::{
+    Ball, ClubHead, ClubSpec, ContactLaw, Delivery, FaceLocation, PRESETS, Real, Strike,
+};
 use nalgebra::{Matrix3, Vector3};
 use proptest::prelude::*;
 
@@ -28,6 +30,8 @@ pub struct Scenario {
     pub club_spin_radps: [f64; 3],
     pub height_m: f64,
     pub toe_m: f64,
+    /// The contact law (the seed's rolling one unless a test asks otherwise).
+    pub contact: ContactLaw<f64>,
 }
 
 impl Scenario {
@@ -48,6 +52,7 @@ impl Scenario {
             face_depth_radius_m: None,
             cg_to_face_m: Vector3::new(lit(cg[0]), lit(cg[1]), lit(cg[2])),
             restitution: lit(self.restitution),
+            contact: self.contact.cast(),
         }
     }
 
@@ -145,6 +150,7 @@ pub fn scenario() -> impl Strategy<Value = Scenario> {
         club_spin_radps: d.6,
         height_m: d.7,
         toe_m: d.8,
+        contact: ContactLaw::Rolling,
     })
 }
 
@@ -160,7 +166,7 @@ pub fn preset_scenario() -> impl Strategy<Value = Scenario> {
             loft_deg: p.loft_deg,
             roll_radius_m: p.roll_radius_m,
             bulge_radius_m: p.bulge_radius_m,
-            cg_to_face_m: [p.cg_to_face_m, 0.0, 0.0],
+            cg_to_face_m: p.cg_to_face_m,
             restitution: p.restitution * e_frac,
             ..s
         }

@@ -18,8 +18,11 @@
 //! element impact models", Sports Engineering 12 (2009); the impulse–momentum model of
 //! their three-dimensional club–ball impact.
 
+pub mod contact_law;
 pub mod full;
 pub mod reduced;
+
+pub use contact_law::{CompliantContact, ContactLaw, Regime};
 
 use crate::ball::{Ball, BallMotion};
 use crate::club::ClubHead;
@@ -56,8 +59,11 @@ pub struct Problem<T: Real> {
     pub ball_mass_kg: T,
     /// Ball moment of inertia (kg·m²).
     pub ball_inertia_kgm2: T,
-    /// Coefficient of restitution.
+    /// Coefficient of restitution (the club's rating; the compliant law varies it with
+    /// the normal speed).
     pub restitution: T,
+    /// The face–ball contact law (the club's).
+    pub contact_law: ContactLaw<T>,
     /// Contact geometry.
     pub contact: Contact<T>,
     /// Club motion before impact.
@@ -121,6 +127,7 @@ impl<T: Real> Problem<T> {
             ball_mass_kg: ball.mass_kg(),
             ball_inertia_kgm2: ball.inertia_kgm2(),
             restitution: club.restitution(),
+            contact_law: *club.contact_law(),
             contact,
             club: *c,
             ball: *b,
@@ -128,7 +135,7 @@ impl<T: Real> Problem<T> {
         })
     }
 
-    /// The target relative contact velocity after impact, `−e (n·u⁰) n`.
+    /// The seed's (rolling) target relative contact velocity after impact, `−e (n·u⁰) n`.
     #[must_use]
     pub fn target_velocity_mps(&self) -> Vector3<T> {
         let n = &self.contact.normal;

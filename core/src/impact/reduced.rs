@@ -7,7 +7,10 @@
 //! ```
 //! `K` maps an impulse on the ball to the change of the contact-point relative velocity;
 //! it is symmetric positive definite for positive masses and inertias, so LDLᵀ solves it.
+//! The right-hand side above is the seed's rolling contact; the compliant law
+//! ([`super::contact_law`]) computes its impulse from the same `K`.
 
+use super::contact_law::ContactLaw;
 use super::{PostImpact, Problem};
 use crate::error::Result;
 use crate::geometry::cross_matrix;
@@ -35,7 +38,20 @@ pub fn collision_matrix<T: Real>(problem: &Problem<T>) -> Matrix3<T> {
 /// [`crate::Error::Singular`] when `K` is not numerically positive definite.
 pub fn solve<T: Real>(problem: &Problem<T>) -> Result<PostImpact<T>> {
     let k = collision_matrix(problem);
-    let rhs = problem.target_velocity_mps() - problem.approach_mps;
-    let p = solve_spd3(&k, &rhs)?;
+    let p = match &problem.contact_law {
+        ContactLaw::Rolling => {
+            let rhs = problem.target_velocity_mps() - problem.approach_mps;
+            solve_spd3(&k, &rhs)?
+        }
+        ContactLaw::Compliant(law) => {
+            law.impulse(
+                &k,
+                &problem.approach_mps,
+                &problem.contact.normal,
+                problem.restitution,
+            )?
+            .0
+        }
+    };
     Ok(problem.apply_impulse(&p))
 }
