@@ -172,3 +172,28 @@ pub fn preset_scenario() -> impl Strategy<Value = Scenario> {
         }
     })
 }
+
+/// Any valid compliant contact law, with the limits weighted in: μ = 0, μ = ∞, e_t at its
+/// clamps, steep obliquity slopes, steep restitution speed slopes.
+pub fn compliant_law() -> impl Strategy<Value = carry_core::impact::CompliantContact<f64>> {
+    (
+        prop_oneof![Just(0.0), Just(f64::INFINITY), 0.0..2.0_f64],
+        prop_oneof![Just(-1.0), Just(0.0), Just(1.0), -1.0..=1.0_f64],
+        prop_oneof![Just(0.0), -3.0..3.0_f64],
+        prop_oneof![Just(0.0), 0.0..0.03_f64],
+    )
+        .prop_map(|(mu, e0, s, k)| carry_core::impact::CompliantContact {
+            friction: mu,
+            tangential_restitution: e0,
+            tangential_restitution_slope: s,
+            restitution_speed_slope_spm: k,
+        })
+}
+
+/// [`scenario`] with a [`compliant_law`].
+pub fn compliant_scenario() -> impl Strategy<Value = Scenario> {
+    (scenario(), compliant_law()).prop_map(|(s, law)| Scenario {
+        contact: ContactLaw::Compliant(law),
+        ..s
+    })
+}
