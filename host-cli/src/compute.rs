@@ -166,7 +166,51 @@ pub fn club_spec<T: Real>(c: &ClubParams) -> ClubSpec<T> {
     if let Some(e) = c.cor {
         spec.restitution = lit(e);
     }
+    if let Some(law) = c.contact {
+        spec.contact = law.cast();
+    }
     spec
+}
+
+/// The typical delivery of the named club, if the user named one.
+fn typical(p: &Params) -> Option<&'static carry_core::presets::TypicalDelivery> {
+    p.club.named.then_some(&p.club.preset.typical)
+}
+
+/// Impact height up the face (m): given, else the named club's typical strike, else 0.
+#[must_use]
+pub fn impact_height_m(p: &Params) -> f64 {
+    p.delivery
+        .impact_height_m
+        .or_else(|| typical(p).map(|t| t.impact_height_m))
+        .unwrap_or(0.0)
+}
+
+/// Attack angle (deg): given, else the named club's typical one, else 0.
+#[must_use]
+pub fn attack_angle_deg(p: &Params) -> f64 {
+    p.delivery
+        .attack_angle_deg
+        .or_else(|| typical(p).map(|t| t.attack_angle_deg))
+        .unwrap_or(0.0)
+}
+
+/// The club's dynamic loft (rad): given, else the named club's typical one (TrackMan's,
+/// at the contact point: the club turns by the face normal's tilt there less), else the
+/// static loft.
+fn dynamic_loft_rad<T: Real>(p: &Params, head: &ClubHead<T>) -> T {
+    if let Some(a) = p.delivery.dynamic_loft_deg {
+        return deg(lit(a));
+    }
+    match typical(p) {
+        Some(t) => {
+            let h = lit::<T>(impact_height_m(p));
+            let tilt = (h * head.face().inv_roll_sq.sqrt()).asin();
+            let tilt = if tilt.is_finite() { tilt } else { T::zero() };
+            deg(lit::<T>(t.dynamic_loft_deg)) - tilt
+        }
+        None => head.loft_rad(),
+    }
 }
 
 fn ball<T: Real>(p: &Params) -> Result<Ball<T>, InputError> {
@@ -183,14 +227,14 @@ fn solve_impact<T: Real>(
     let d = &p.delivery;
     let delivery = Delivery {
         club_speed_mps: lit(d.club_speed_mps),
-        attack_angle_rad: deg(lit(d.attack_angle_deg)),
+        attack_angle_rad: deg(lit(attack_angle_deg(p))),
         club_path_rad: deg(lit(d.club_path_deg)),
         face_angle_rad: deg(lit(d.face_angle_deg)),
-        dynamic_loft_rad: d.dynamic_loft_deg.map_or(head.loft_rad(), |a| deg(lit(a))),
+        dynamic_loft_rad: dynamic_loft_rad(p, &head),
         lie_rad: deg(lit(d.lie_deg)),
         club_spin_radps: v3(d.club_spin_radps),
         location: FaceLocation {
-            height_m: lit(d.impact_height_m),
+            height_m: lit(impact_height_m(p)),
             toe_m: lit(d.impact_toe_m),
         },
     };

@@ -101,6 +101,11 @@ pub fn field_key(field: Field) -> &'static str {
         Field::Step => "step",
         Field::Tolerance => "tolerance",
         Field::RecordInterval => "interval",
+        Field::ContactLaw => "contact, solver",
+        Field::Friction
+        | Field::TangentialRestitution
+        | Field::TangentialRestitutionSlope
+        | Field::RestitutionSpeedSlope => "contact",
         // LaunchPosition and Gravity are not options of the CLI (fixed tee, standard g),
         // nor is any field added to the core later.
         _ => "precision",
@@ -116,6 +121,13 @@ impl From<Error> for InputError {
                     Field::Temperature => format!("{reason} (−100 to 100 °C)"),
                     Field::Altitude => format!("{reason} (−5000 to 11000 m)"),
                     Field::Restitution => format!("{reason} (0 to 1)"),
+                    Field::ContactLaw => {
+                        "the full 15×15 solver supports only --contact rolling".to_owned()
+                    }
+                    Field::Friction
+                    | Field::TangentialRestitution
+                    | Field::TangentialRestitutionSlope
+                    | Field::RestitutionSpeedSlope => format!("{} {reason}", field.name()),
                     Field::Pressure => {
                         format!(
                             "{reason} (or below the vapour pressure at this temperature and humidity)"

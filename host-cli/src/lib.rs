@@ -10,6 +10,7 @@ pub mod batch;
 pub mod cli;
 pub mod clubs;
 pub mod compute;
+pub mod contact;
 pub mod error;
 pub mod params;
 pub mod plot;
@@ -148,7 +149,7 @@ fn single(
             club: p.club.preset.name,
             club_speed_mps: (mode != Mode::Flight).then_some(p.delivery.club_speed_mps),
             impact_location_m: (mode != Mode::Flight)
-                .then_some((p.delivery.impact_height_m, p.delivery.impact_toe_m)),
+                .then_some((compute::impact_height_m(p), p.delivery.impact_toe_m)),
         };
         report::table(mode, &r, output.units, &ctx).into_bytes()
     };

@@ -6,6 +6,7 @@
 
 use crate::error::InputError;
 use crate::units::{Quantity, Units};
+use carry_core::impact::ContactLaw;
 use carry_core::{PRESETS, Preset};
 
 /// Club head: a preset and any overrides.
@@ -29,6 +30,11 @@ pub struct ClubParams {
     pub cg_to_face_m: Option<[f64; 3]>,
     /// Coefficient of restitution.
     pub cor: Option<f64>,
+    /// Contact law; `None`: the preset's (the fitted compliant contact).
+    pub contact: Option<ContactLaw<f64>>,
+    /// The user named the preset: unspecified attack angle, dynamic loft and impact height
+    /// take its typical delivery.
+    pub named: bool,
 }
 
 /// The club delivery (launch-monitor terms).
@@ -36,20 +42,20 @@ pub struct ClubParams {
 pub struct DeliveryParams {
     /// Club head speed (m/s).
     pub club_speed_mps: f64,
-    /// Attack angle (deg).
-    pub attack_angle_deg: f64,
+    /// Attack angle (deg); `None` = the named club's typical delivery, else 0.
+    pub attack_angle_deg: Option<f64>,
     /// Club path (deg).
     pub club_path_deg: f64,
     /// Face angle (deg).
     pub face_angle_deg: f64,
-    /// Dynamic loft (deg); `None` = the club's static loft.
+    /// Dynamic loft (deg); `None` = the named club's typical delivery, else its static loft.
     pub dynamic_loft_deg: Option<f64>,
     /// Lie (deg).
     pub lie_deg: f64,
     /// Club angular velocity (rad/s, G).
     pub club_spin_radps: [f64; 3],
-    /// Impact height up the face (m).
-    pub impact_height_m: f64,
+    /// Impact height up the face (m); `None` = the named club's typical delivery, else 0.
+    pub impact_height_m: Option<f64>,
     /// Impact offset toward the toe (m).
     pub impact_toe_m: f64,
 }
@@ -148,18 +154,20 @@ impl Default for Params {
                 face_depth_radius_m: None,
                 cg_to_face_m: None,
                 cor: None,
+                contact: None,
+                named: false,
             },
             ball_mass_kg: carry_core::Ball::<f64>::STANDARD_MASS_KG,
             ball_radius_m: carry_core::Ball::<f64>::STANDARD_RADIUS_M,
             delivery: DeliveryParams {
                 club_speed_mps: DEFAULT_CLUB_SPEED_MPS,
-                attack_angle_deg: 0.0,
+                attack_angle_deg: None,
                 club_path_deg: 0.0,
                 face_angle_deg: 0.0,
                 dynamic_loft_deg: None,
                 lie_deg: 0.0,
                 club_spin_radps: [0.0; 3],
-                impact_height_m: 0.0,
+                impact_height_m: None,
                 impact_toe_m: 0.0,
             },
             launch: LaunchParams {
@@ -189,6 +197,8 @@ pub enum Kind {
     Tensor,
     /// A preset name.
     Preset,
+    /// A contact-law name or TOML file.
+    Contact,
     /// `true`/`false`/`1`/`0`/`yes`/`no`.
     Bool,
 }
@@ -244,6 +254,7 @@ keys! {
     ImpactToe = "impact_toe", Number, Offset;
     Cor = "cor", Number, Plain;
     Club = "club", Preset, Plain;
+    Contact = "contact", Contact, Plain;
     ClubMass = "club_mass", Number, Plain;
     ClubInertia = "club_inertia", Tensor, Plain;
     Loft = "loft", Number, Plain;
@@ -294,6 +305,8 @@ pub enum Value {
     Tensor([f64; 9]),
     /// A preset.
     Preset(&'static Preset),
+    /// A contact law.
+    Contact(ContactLaw<f64>),
     /// A switch.
     Bool(bool),
 }
@@ -324,6 +337,7 @@ impl Key {
             Kind::Vector => parse_vec3(text).map(Value::Vector).map_err(err),
             Kind::Tensor => parse_tensor(text).map(Value::Tensor).map_err(err),
             Kind::Preset => parse_preset(text).map(Value::Preset).map_err(err),
+            Kind::Contact => crate::contact::parse(text).map(Value::Contact).map_err(err),
             Kind::Bool => parse_bool(text).map(Value::Bool).map_err(err),
         }
     }
@@ -341,7 +355,7 @@ impl Key {
                 let x = si(x);
                 match self {
                     Key::ClubSpeed => d.club_speed_mps = x,
-                    Key::AttackAngle => d.attack_angle_deg = x,
+                    Key::AttackAngle => d.attack_angle_deg = Some(x),
                     Key::ClubPath => d.club_path_deg = x,
                     Key::FaceAngle => d.face_angle_deg = x,
                     Key::DynamicLoft => d.dynamic_loft_deg = Some(x),
@@ -349,7 +363,7 @@ impl Key {
                     Key::ClubSpinX => d.club_spin_radps[0] = x,
                     Key::ClubSpinY => d.club_spin_radps[1] = x,
                     Key::ClubSpinZ => d.club_spin_radps[2] = x,
-                    Key::ImpactHeight => d.impact_height_m = x,
+                    Key::ImpactHeight => d.impact_height_m = Some(x),
                     Key::ImpactToe => d.impact_toe_m = x,
                     Key::Cor => c.cor = Some(x),
                     Key::ClubMass => c.mass_kg = Some(x),
@@ -396,7 +410,11 @@ impl Key {
                 }
             }
             Value::Tensor(t) => c.inertia_kgm2 = Some(t),
-            Value::Preset(preset) => c.preset = preset,
+            Value::Preset(preset) => {
+                c.preset = preset;
+                c.named = true;
+            }
+            Value::Contact(law) => c.contact = Some(law),
             Value::Bool(b) => match self {
                 Key::NoDrag => s.no_drag = b,
                 Key::NoLift => s.no_lift = b,
