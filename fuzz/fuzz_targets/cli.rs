@@ -29,8 +29,15 @@ fuzz_target!(|data: &[u8]| {
 
 fn arguments(bytes: &[u8]) {
     let mut args = vec!["carry".to_owned()];
-    args.extend(bytes.split(|&b| b == 0).map(|a| String::from_utf8_lossy(a).into_owned()));
-    if args.iter().any(|a| a.contains("--scene") || a.contains("--input") || a.contains("--output")) {
+    args.extend(
+        bytes
+            .split(|&b| b == 0)
+            .map(|a| String::from_utf8_lossy(a).into_owned()),
+    );
+    if args
+        .iter()
+        .any(|a| a.contains("--scene") || a.contains("--input") || a.contains("--output"))
+    {
         return;
     }
     let Ok(cli) = Cli::try_parse_from(&args) else {
@@ -73,7 +80,11 @@ fn csv_rows(bytes: &[u8]) {
         mode,
         base,
         numerics,
-        units: if flags & 4 == 0 { Units::Si } else { Units::Imperial },
+        units: if flags & 4 == 0 {
+            Units::Si
+        } else {
+            Units::Imperial
+        },
         json: flags & 8 != 0,
         input: "-".into(),
         threads: Some(1),
