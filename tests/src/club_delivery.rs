@@ -115,8 +115,15 @@ impl Row {
     /// # Errors
     /// Any core error.
     pub fn predict_with(&self, spec: &ClubSpec<f64>) -> carry_core::Result<Predicted> {
+        self.predict_at(spec, self.impact_height_m())
+    }
+
+    /// As [`Row::predict`] with a given club, struck `h` (m) above the face centre.
+    ///
+    /// # Errors
+    /// Any core error.
+    pub fn predict_at(&self, spec: &ClubSpec<f64>, h: f64) -> carry_core::Result<Predicted> {
         let club = spec.validate()?;
-        let h = self.impact_height_m();
         // TrackMan's dynamic loft is the face's at the contact point: on a face with roll
         // the club turns by the normal's tilt there less
         let roll_tilt = (h * club.face().inv_roll_sq.sqrt()).asin();
@@ -174,13 +181,52 @@ pub struct Summary {
     pub worst_spin_rel: f64,
 }
 
+/// How a model variant strikes the rows.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Strike {
+    /// At the face centre (today's seed use).
+    Centred,
+    /// Where [`Row::impact_height_m`] says (drivers above centre, irons off the turf).
+    Typical,
+}
+
 /// Per-row errors and their summary for `contact` (a row that fails counts as NaN).
 #[must_use]
 pub fn evaluate(rows: &[Row], contact: ContactLaw<f64>) -> (Vec<RowError>, Summary) {
+    evaluate_with(rows, contact, Strike::Typical)
+}
+
+/// The prediction of `row` with `contact` and `strike`.
+///
+/// # Errors
+/// Any core error.
+pub fn predict(
+    row: &Row,
+    contact: ContactLaw<f64>,
+    strike: Strike,
+) -> carry_core::Result<Predicted> {
+    let spec = ClubSpec {
+        contact,
+        ..row.preset().spec::<f64>()
+    };
+    let h = match strike {
+        Strike::Centred => 0.0,
+        Strike::Typical => row.impact_height_m(),
+    };
+    row.predict_at(&spec, h)
+}
+
+/// [`evaluate`] with a strike model.
+#[must_use]
+pub fn evaluate_with(
+    rows: &[Row],
+    contact: ContactLaw<f64>,
+    strike: Strike,
+) -> (Vec<RowError>, Summary) {
     let errs: Vec<RowError> = rows
         .iter()
         .map(|r| {
-            r.predict(contact).map_or(
+            predict(r, contact, strike).map_or(
                 RowError {
                     speed_rel: f64::NAN,
                     launch_deg: f64::NAN,
