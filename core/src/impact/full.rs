@@ -11,14 +11,13 @@
 //! u = V_b − [r_ball]× Ω_b − V_c + [r_imp]× Ω_c
 //! ```
 //!
-//! Seed contact only ([`ContactLaw::Rolling`]): the compliant law is piecewise (friction
+//! Seed contact only ([`super::ContactLaw::Rolling`]): the compliant law is piecewise (friction
 //! cone, energy bound), and its branch is decided from the collision matrix `K` of the
 //! reduced form; a 15×15 version would re-solve that decision, not check it independently.
-//! Asking for it is a typed error.
+//! Asking for it ([`super::solve`]) is a typed error.
 
-use super::contact_law::ContactLaw;
 use super::{PostImpact, Problem};
-use crate::error::{Error, Field, Reason, Result};
+use crate::error::Result;
 use crate::geometry::{cross_matrix, tangents};
 use crate::linalg::{Pivoting, solve_gauss};
 use crate::real::Real;
@@ -88,16 +87,8 @@ pub fn assemble_in_frame<T: Real>(
 /// Solves the full system with `pivoting`.
 ///
 /// # Errors
-/// [`crate::Error::Singular`] when a pivot falls below the scale-aware threshold;
-/// [`Error::InvalidInput`] (`ContactLaw`, `UnsupportedBySolver`) for a contact law other
-/// than the seed's rolling one.
+/// [`crate::Error::Singular`] when a pivot falls below the scale-aware threshold.
 pub fn solve<T: Real>(problem: &Problem<T>, pivoting: Pivoting) -> Result<PostImpact<T>> {
-    if problem.contact_law != ContactLaw::Rolling {
-        return Err(Error::invalid(
-            Field::ContactLaw,
-            Reason::UnsupportedBySolver,
-        ));
-    }
     let (a, b) = assemble(problem);
     solve_system(a, &b, pivoting)
 }

@@ -28,7 +28,7 @@ use crate::ball::{Ball, BallMotion};
 use crate::club::ClubHead;
 use crate::contact::Contact;
 use crate::delivery::{ClubMotion, Strike};
-use crate::error::{Error, Result};
+use crate::error::{Error, Field, Reason, Result};
 use crate::launch::LaunchMetrics;
 use crate::linalg::Pivoting;
 use crate::real::Real;
@@ -62,8 +62,6 @@ pub struct Problem<T: Real> {
     /// Coefficient of restitution (the club's rating; the compliant law varies it with
     /// the normal speed).
     pub restitution: T,
-    /// The face–ball contact law (the club's).
-    pub contact_law: ContactLaw<T>,
     /// Contact geometry.
     pub contact: Contact<T>,
     /// Club motion before impact.
@@ -127,7 +125,6 @@ impl<T: Real> Problem<T> {
             ball_mass_kg: ball.mass_kg(),
             ball_inertia_kgm2: ball.inertia_kgm2(),
             restitution: club.restitution(),
-            contact_law: *club.contact_law(),
             contact,
             club: *c,
             ball: *b,
@@ -144,6 +141,7 @@ impl<T: Real> Problem<T> {
 
     /// Post-impact motion from the impulse `p` on the ball (momentum balances).
     #[must_use]
+    #[inline(always)]
     pub fn apply_impulse(&self, p: &Vector3<T>) -> PostImpact<T> {
         let k = &self.contact;
         PostImpact {
@@ -162,7 +160,8 @@ impl<T: Real> Problem<T> {
 ///
 /// # Errors
 /// [`Error::OffFace`], [`Error::NoApproach`], or [`Error::Singular`] when the system is too
-/// ill-conditioned for the precision.
+/// ill-conditioned for the precision; [`Error::InvalidInput`] (`ContactLaw`,
+/// `UnsupportedBySolver`) for the full solver with a contact law other than the seed's.
 pub fn solve<T: Real>(
     club: &ClubHead<T>,
     ball: &Ball<T>,
@@ -170,9 +169,17 @@ pub fn solve<T: Real>(
     solver: Solver,
 ) -> Result<ImpactOutcome<T>> {
     let problem = Problem::new(club, ball, strike)?;
-    let post = match solver {
-        Solver::Reduced => reduced::solve(&problem)?,
-        Solver::Full(pivoting) => full::solve(&problem, pivoting)?,
+    // the seed's path is the seed's code: a law it does not use costs it nothing
+    let post = match (solver, club.contact_law()) {
+        (Solver::Reduced, ContactLaw::Rolling) => reduced::solve(&problem)?,
+        (Solver::Reduced, ContactLaw::Compliant(law)) => reduced::solve_compliant(&problem, law)?,
+        (Solver::Full(pivoting), ContactLaw::Rolling) => full::solve(&problem, pivoting)?,
+        (Solver::Full(_), ContactLaw::Compliant(_)) => {
+            return Err(Error::invalid(
+                Field::ContactLaw,
+                Reason::UnsupportedBySolver,
+            ));
+        }
     };
     let ball_after = BallMotion {
         velocity_mps: post.ball_velocity_mps,

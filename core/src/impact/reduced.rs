@@ -10,7 +10,7 @@
 //! The right-hand side above is the seed's rolling contact; the compliant law
 //! ([`super::contact_law`]) computes its impulse from the same `K`.
 
-use super::contact_law::ContactLaw;
+use super::contact_law::CompliantContact;
 use super::{PostImpact, Problem};
 use crate::error::Result;
 use crate::geometry::cross_matrix;
@@ -20,6 +20,7 @@ use nalgebra::Matrix3;
 
 /// The collision matrix `K` of `problem`.
 #[must_use]
+#[inline(always)]
 pub fn collision_matrix<T: Real>(problem: &Problem<T>) -> Matrix3<T> {
     let c = &problem.contact;
     let rc = cross_matrix(&c.club_lever_m);
@@ -32,26 +33,31 @@ pub fn collision_matrix<T: Real>(problem: &Problem<T>) -> Matrix3<T> {
     (k + k.transpose()) * nalgebra::convert::<f64, T>(0.5)
 }
 
-/// Solves the reduced form.
+/// Solves the reduced form with the seed's rolling contact.
 ///
 /// # Errors
 /// [`crate::Error::Singular`] when `K` is not numerically positive definite.
 pub fn solve<T: Real>(problem: &Problem<T>) -> Result<PostImpact<T>> {
     let k = collision_matrix(problem);
-    let p = match &problem.contact_law {
-        ContactLaw::Rolling => {
-            let rhs = problem.target_velocity_mps() - problem.approach_mps;
-            solve_spd3(&k, &rhs)?
-        }
-        ContactLaw::Compliant(law) => {
-            law.impulse(
-                &k,
-                &problem.approach_mps,
-                &problem.contact.normal,
-                problem.restitution,
-            )?
-            .0
-        }
-    };
+    let rhs = problem.target_velocity_mps() - problem.approach_mps;
+    let p = solve_spd3(&k, &rhs)?;
+    Ok(problem.apply_impulse(&p))
+}
+
+/// Solves the reduced form with the compliant contact `law` (its impulse from the same `K`).
+///
+/// # Errors
+/// [`crate::Error::Singular`] when `K` is not numerically positive definite.
+pub fn solve_compliant<T: Real>(
+    problem: &Problem<T>,
+    law: &CompliantContact<T>,
+) -> Result<PostImpact<T>> {
+    let k = collision_matrix(problem);
+    let (p, _) = law.impulse(
+        &k,
+        &problem.approach_mps,
+        &problem.contact.normal,
+        problem.restitution,
+    )?;
     Ok(problem.apply_impulse(&p))
 }
