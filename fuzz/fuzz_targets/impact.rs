@@ -55,6 +55,18 @@ fn run<T: Real>(b: &mut Bytes<'_>) -> Result<()> {
             })
         },
     };
+    if let ContactLaw::Compliant(law) = spec.contact {
+        // the law's impulse on its own, with an arbitrary (usually not SPD) matrix and
+        // arbitrary velocities: a typed error or a finite impulse, never a panic
+        if b.flag() {
+            let k = Matrix3::from_fn(|_, _| lit::<T>(b.param(-100.0, 100.0)));
+            let u0 = v::<T>(b.vec3(-80.0, 80.0));
+            let n = v::<T>(b.vec3(-1.0, 1.0));
+            if let Ok((p, _)) = law.impulse(&k, &u0, &n, lit(b.param(0.0, 1.0))) {
+                assert!(p.iter().all(|x| x.is_finite()), "non-finite impulse {p:?}");
+            }
+        }
+    }
     let ball = Ball::<T>::new(lit(b.param(0.01, 0.1)), lit(b.param(0.01, 0.05)))?;
     let direct = b.flag();
     let club = spec.validate()?;
