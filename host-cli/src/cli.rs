@@ -86,7 +86,7 @@ fn contact(s: &str) -> Result<ContactLaw<f64>, String> {
 #[derive(Debug, Clone, Args)]
 #[command(next_help_heading = "Delivery")]
 pub struct DeliveryArgs {
-    /// Club head speed [m/s | mph] (default 45 m/s).
+    /// Club head speed [m/s | mph] (default 45 m/s, or the named club's typical tour speed).
     #[arg(long, value_name = "SPEED", value_parser = finite, allow_hyphen_values = true)]
     pub club_speed: Option<f64>,
     /// Attack angle [deg, + up] (default 0, or the named club's typical).
@@ -125,8 +125,8 @@ pub struct DeliveryArgs {
 #[command(next_help_heading = "Club and ball")]
 pub struct ClubArgs {
     /// Club preset: driver, 3wood, hybrid, 4iron … 9iron, pw, gw, sw, lw (lw58); see
-    /// `carry clubs`. A named club's typical tour delivery (attack angle, dynamic loft, impact
-    /// height) fills in the ones not given.
+    /// `carry clubs`. A named club's typical tour delivery (club speed, attack angle, dynamic
+    /// loft, impact height) fills in the ones not given.
     #[arg(long, value_name = "PRESET", value_parser = preset)]
     pub club: Option<&'static Preset>,
     /// Face–ball contact law: `compliant` (default: friction-limited, tangential

@@ -177,6 +177,15 @@ fn typical(p: &Params) -> Option<&'static carry_core::presets::TypicalDelivery> 
     p.club.named.then_some(&p.club.preset.typical)
 }
 
+/// Club speed (m/s): given, else the named club's typical (tour) speed, else the default.
+#[must_use]
+pub fn club_speed_mps(p: &Params) -> f64 {
+    match typical(p) {
+        Some(t) if !p.delivery.club_speed_given => t.club_speed_mps,
+        _ => p.delivery.club_speed_mps,
+    }
+}
+
 /// Impact height up the face (m): given, else the named club's typical strike, else 0.
 #[must_use]
 pub fn impact_height_m(p: &Params) -> f64 {
@@ -226,7 +235,7 @@ fn solve_impact<T: Real>(
     let head = club::<T>(&p.club)?;
     let d = &p.delivery;
     let delivery = Delivery {
-        club_speed_mps: lit(d.club_speed_mps),
+        club_speed_mps: lit(club_speed_mps(p)),
         attack_angle_rad: deg(lit(attack_angle_deg(p))),
         club_path_rad: deg(lit(d.club_path_deg)),
         face_angle_rad: deg(lit(d.face_angle_deg)),
@@ -241,7 +250,7 @@ fn solve_impact<T: Real>(
     let strike = delivery.strike(&head)?;
     impact::solve(&head, ball, &strike, n.solver()).map_err(|e| {
         if e == carry_core::Error::NoApproach
-            && d.club_speed_mps == 0.0
+            && club_speed_mps(p) == 0.0
             && d.club_spin_radps == [0.0; 3]
         {
             InputError::new(

@@ -147,7 +147,7 @@ fn single(
     } else {
         let ctx = report::TableContext {
             club: p.club.preset.name,
-            club_speed_mps: (mode != Mode::Flight).then_some(p.delivery.club_speed_mps),
+            club_speed_mps: (mode != Mode::Flight).then_some(compute::club_speed_mps(p)),
             impact_location_m: (mode != Mode::Flight)
                 .then_some((compute::impact_height_m(p), p.delivery.impact_toe_m)),
         };

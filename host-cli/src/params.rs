@@ -40,8 +40,10 @@ pub struct ClubParams {
 /// The club delivery (launch-monitor terms).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct DeliveryParams {
-    /// Club head speed (m/s).
+    /// Club head speed (m/s); see `club_speed_given`.
     pub club_speed_mps: f64,
+    /// The user gave the club speed (else a named club's typical speed replaces the default).
+    pub club_speed_given: bool,
     /// Attack angle (deg); `None` = the named club's typical delivery, else 0.
     pub attack_angle_deg: Option<f64>,
     /// Club path (deg).
@@ -161,6 +163,7 @@ impl Default for Params {
             ball_radius_m: carry_core::Ball::<f64>::STANDARD_RADIUS_M,
             delivery: DeliveryParams {
                 club_speed_mps: DEFAULT_CLUB_SPEED_MPS,
+                club_speed_given: false,
                 attack_angle_deg: None,
                 club_path_deg: 0.0,
                 face_angle_deg: 0.0,
@@ -354,7 +357,10 @@ impl Key {
             Value::Number(x) => {
                 let x = si(x);
                 match self {
-                    Key::ClubSpeed => d.club_speed_mps = x,
+                    Key::ClubSpeed => {
+                        d.club_speed_mps = x;
+                        d.club_speed_given = true;
+                    }
                     Key::AttackAngle => d.attack_angle_deg = Some(x),
                     Key::ClubPath => d.club_path_deg = x,
                     Key::FaceAngle => d.face_angle_deg = x,

@@ -939,7 +939,16 @@ fn batch_keeps_order_reports_bad_rows_and_matches_single_runs() {
             .is_some_and(|e| e.contains("club_speed"))
     );
     // row 2 names the driver: its typical delivery fills in dynamic loft and impact height
-    let shot = json(&["shot", "--json", "--club", "driver", "--attack-angle", "0"]);
+    let shot = json(&[
+        "shot",
+        "--json",
+        "--club",
+        "driver",
+        "--club-speed",
+        "45",
+        "--attack-angle",
+        "0",
+    ]);
     assert_eq!(rows[0]["flight"], shot["flight"]);
     assert_eq!(rows[0]["launch"], shot["launch"]);
 }
