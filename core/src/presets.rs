@@ -13,7 +13,7 @@
 //! calibrated model launches the ball at TrackMan's average launch angle for that club
 //! (`docs/impact.md`, "Typical deliveries").
 
-use crate::club::ClubSpec;
+use crate::club::{ClubSpec, FaceShape};
 use crate::impact::contact_law::{CompliantContact, ContactLaw};
 use crate::real::{Real, lit};
 use crate::units::{MPS_PER_MPH, deg};
@@ -46,6 +46,20 @@ pub struct TypicalDelivery {
 /// Estimate: face heights of 40–45 mm at the centre of the scorelines, CG ≈2 mm lower
 /// (published CG heights of cavity-back irons are 17–20 mm).
 pub const IRON_FACE_CENTRE_HEIGHT_M: f64 = 0.020;
+
+/// How far the face normal at `height_m` up the face tilts back from the face centre's (rad):
+/// `tan γ = (a/b²)·ΔY / s`, `s² = 1 − ΔY²/b²` (PHYSICS.md's face angles; 0 on a flat face,
+/// 0 when off the face). TrackMan's dynamic loft is the face's at the contact point, so the
+/// club's orientation is that loft minus γ.
+#[must_use]
+pub fn roll_tilt_rad<T: Real>(face: &FaceShape<T>, height_m: T) -> T {
+    let s2 = T::one() - height_m * height_m * face.inv_roll_sq;
+    if s2 > T::zero() {
+        (face.depth_over_roll_sq * height_m / s2.sqrt()).atan()
+    } else {
+        T::zero()
+    }
+}
 
 /// Where a ball lying on firm turf meets a flat face of dynamic loft `δ`, from the face
 /// centre (m): the contact point is `R (1 − sin δ)` above the ground (the ball's centre at
@@ -394,6 +408,23 @@ mod tests {
             assert!((t.impact_height_m - h).abs() <= 0.6e-4, "{}: {h}", p.name);
             assert!(t.dynamic_loft_deg < p.loft_deg, "{}", p.name);
         }
+    }
+
+    /// With a = b the tilt is asin(ΔY/b): the normal of a sphere.
+    #[test]
+    fn roll_tilt_is_the_normals_angle() {
+        let Ok(club) = PRESETS[0].spec::<f64>().validate() else {
+            panic!("driver")
+        };
+        for h in [-0.01, 0.0, 0.003, 0.02] {
+            let want = (h / 0.30_f64).asin();
+            assert!((roll_tilt_rad(club.face(), h) - want).abs() < 1e-15, "{h}");
+        }
+        assert_eq!(roll_tilt_rad(club.face(), 0.5), 0.0);
+        let Ok(iron) = PRESETS[6].spec::<f32>().validate() else {
+            panic!("7iron")
+        };
+        assert_eq!(roll_tilt_rad(iron.face(), -0.007_f32), 0.0);
     }
 
     #[test]

@@ -6,6 +6,7 @@ use crate::params::{ClubParams, DEFAULT_BACKSPIN_RPM, Params};
 use crate::report::{ClubAfter, FlightReport, LaunchReport, Report};
 use carry_core::flight::{Integrator, Recorder, Sample};
 use carry_core::impact::{self, Solver};
+use carry_core::presets::roll_tilt_rad;
 use carry_core::real::{lit, to_f64};
 use carry_core::units::{deg, rpm, to_deg, to_rpm};
 use carry_core::{
@@ -214,9 +215,7 @@ fn dynamic_loft_rad<T: Real>(p: &Params, head: &ClubHead<T>) -> T {
     match typical(p) {
         Some(t) => {
             let h = lit::<T>(impact_height_m(p));
-            let tilt = (h * head.face().inv_roll_sq.sqrt()).asin();
-            let tilt = if tilt.is_finite() { tilt } else { T::zero() };
-            deg(lit::<T>(t.dynamic_loft_deg)) - tilt
+            deg(lit::<T>(t.dynamic_loft_deg)) - roll_tilt_rad(head.face(), h)
         }
         None => head.loft_rad(),
     }

@@ -3,7 +3,7 @@
 //! of each row, for calibration and accuracy tests.
 
 use carry_core::impact::{self, ContactLaw, Solver};
-use carry_core::presets::turf_impact_height_m;
+use carry_core::presets::{roll_tilt_rad, turf_impact_height_m};
 use carry_core::units::{deg, mph, to_deg, to_mph, to_rpm};
 use carry_core::{Ball, ClubSpec, Delivery, FaceLocation, Preset};
 use nalgebra::Vector3;
@@ -126,7 +126,7 @@ impl Row {
         let club = spec.validate()?;
         // TrackMan's dynamic loft is the face's at the contact point: on a face with roll
         // the club turns by the normal's tilt there less
-        let roll_tilt = (h * club.face().inv_roll_sq.sqrt()).asin();
+        let roll_tilt = roll_tilt_rad(club.face(), h);
         let d = Delivery {
             club_speed_mps: mph(self.club_speed_mph),
             attack_angle_rad: deg(self.attack_deg),

@@ -5,6 +5,7 @@
 //! speed and spin; the table prints with `-- --nocapture`.
 
 use carry_core::impact::{self, Solver};
+use carry_core::presets::roll_tilt_rad;
 use carry_core::units::{deg, to_deg, to_mph, to_rpm};
 use carry_core::{Ball, Delivery, FaceLocation, Preset};
 use nalgebra::Vector3;
@@ -36,7 +37,7 @@ fn presets_reproduce_the_tour_averages() {
         let t = p.typical;
         let h = t.impact_height_m;
         // TrackMan's dynamic loft is the face's at the contact point
-        let tilt = (h * club.face().inv_roll_sq.sqrt()).asin();
+        let tilt = roll_tilt_rad(club.face(), h);
         let d = Delivery {
             club_speed_mps: t.club_speed_mps,
             attack_angle_rad: deg(t.attack_angle_deg),
