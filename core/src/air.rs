@@ -18,6 +18,9 @@ use crate::validate::{finite, in_range, positive};
 pub const STANDARD_DENSITY_KGM3: f64 = 1.225;
 /// Sea-level standard pressure (Pa).
 pub const STANDARD_PRESSURE_PA: f64 = 101_325.0;
+/// Dynamic viscosity of air at 15 °C by Sutherland's law (Pa·s): the viscosity of an
+/// [`Air::Density`] whose temperature is not given (ISA sea level).
+pub const STANDARD_VISCOSITY_PAS: f64 = 1.789_4e-5;
 /// Specific gas constant of dry air (J/(kg·K)).
 pub const R_DRY: f64 = 287.058;
 /// Specific gas constant of water vapour (J/(kg·K)).
@@ -117,6 +120,24 @@ impl<T: Real> Weather<T> {
 }
 
 impl<T: Real> Air<T> {
+    /// Dynamic viscosity μ (Pa·s), for the Reynolds number `Re = ρVD/μ`: Sutherland's law
+    /// `μ = 1.458·10⁻⁶·T_K^1.5/(T_K + 110.4)` at the weather's temperature, or
+    /// [`STANDARD_VISCOSITY_PAS`] (15 °C) for a fixed density. Humidity changes μ by under
+    /// 1 % and is neglected.
+    ///
+    /// # Errors
+    /// [`Field::Temperature`] outside −100..=100 °C.
+    pub fn dynamic_viscosity_pas(&self) -> Result<T> {
+        match self {
+            Self::Density(_) => Ok(lit(STANDARD_VISCOSITY_PAS)),
+            Self::Weather(w) => {
+                let t = in_range(w.temperature_c, lit(-100.0), lit(100.0), Field::Temperature)?;
+                let tk = t + lit(273.15);
+                Ok(lit::<T>(1.458e-6) * tk * tk.sqrt() / (tk + lit(110.4)))
+            }
+        }
+    }
+
     /// The density this air has (kg/m³).
     ///
     /// # Errors

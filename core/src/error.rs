@@ -106,6 +106,14 @@ pub enum Field {
     TimeLimit,
     /// Gravitational acceleration (m/s²).
     Gravity,
+    /// A drag coefficient of the aerodynamic model.
+    DragCoefficient,
+    /// A lift coefficient of the aerodynamic model.
+    LiftCoefficient,
+    /// The spin-decay (moment) coefficient of the aerodynamic model.
+    SpinDecayCoefficient,
+    /// A Reynolds-number parameter of the aerodynamic model (drag crisis).
+    ReynoldsNumber,
     /// Trajectory recording interval (s).
     RecordInterval,
     // --- numerics ---
@@ -236,6 +244,10 @@ impl Field {
             Self::LandingHeight => "landing height",
             Self::TimeLimit => "time limit",
             Self::Gravity => "gravity",
+            Self::DragCoefficient => "drag coefficient",
+            Self::LiftCoefficient => "lift coefficient",
+            Self::SpinDecayCoefficient => "spin-decay coefficient",
+            Self::ReynoldsNumber => "critical Reynolds number",
             Self::RecordInterval => "record interval",
             Self::Step => "step size",
             Self::Tolerance => "tolerance",

@@ -7,6 +7,7 @@
 //! no wind evaluation without wind, no air-speed `sqrt` in a vacuum, no spin-decay term
 //! without decay. See docs/flight.md for the measured cost per effect.
 
+use crate::aero::{AeroModel, PreparedAero};
 use crate::air::Air;
 use crate::ball::Ball;
 use crate::error::{Error, Field, Reason, Result};
@@ -63,6 +64,9 @@ impl Default for Effects {
 pub struct Scene<T: Real> {
     /// The aerodynamic effects to simulate.
     pub effects: Effects,
+    /// The aerodynamic model (drag, lift and spin-decay laws): the calibrated
+    /// [`AeroModel::tour_2023`] by default, [`AeroModel::quintavalla`] for the seed's.
+    pub aero: AeroModel<T>,
     /// Air density: fixed, or from the weather.
     pub air: Air<T>,
     /// Wind: none, uniform, or a power-law profile.
@@ -79,11 +83,13 @@ pub struct Scene<T: Real> {
 }
 
 impl<T: Real> Default for Scene<T> {
-    /// PHYSICS.md defaults: all effects, ρ = 1.225 kg/m³, no wind, landing at 0 m, 60 s
+    /// All effects with the calibrated aerodynamic model ([`AeroModel::tour_2023`]), and
+    /// PHYSICS.md's other defaults: ρ = 1.225 kg/m³, no wind, landing at 0 m, 60 s
     /// time limit, g = 9.80665 m/s², tee at the origin.
     fn default() -> Self {
         Self {
             effects: Effects::ALL,
+            aero: AeroModel::default(),
             air: Air::default(),
             wind: Wind::None,
             landing_height_m: T::zero(),
@@ -100,16 +106,8 @@ impl<T: Real> Default for Scene<T> {
 pub struct PreparedScene<T: Real> {
     pub(crate) effects: Effects,
     pub(crate) gravity: T,
-    /// `A·0.171` with `A = ½ρπR²/m_b` (1/m).
-    pub(crate) drag_v: T,
-    /// `A·0.62·R` (1/rad).
-    pub(crate) drag_s: T,
-    /// `A·0.083` (1/m).
-    pub(crate) lift_v: T,
-    /// `A·0.885·R` (1/rad).
-    pub(crate) lift_s: T,
-    /// `½ρπR²·0.0125·R·D / I_b` (1/m).
-    pub(crate) decay: T,
+    /// The aerodynamic model per unit mass (`A = ½ρπR²/m_b` folded in).
+    pub(crate) aero: PreparedAero<T>,
     pub(crate) wind: WindField<T>,
     pub(crate) landing_height: T,
     pub(crate) time_limit: T,
@@ -123,7 +121,8 @@ impl<T: Real> Scene<T> {
     /// # Errors
     /// [`crate::Error::InvalidInput`] naming the offending field: air density (NaN,
     /// infinite, negative) or weather ([`Field::Temperature`], [`Field::Humidity`],
-    /// [`Field::Pressure`], [`Field::Altitude`]), wind, [`Field::LandingHeight`] not finite,
+    /// [`Field::Pressure`], [`Field::Altitude`]), the aerodynamic model's coefficients
+    /// ([`AeroModel::validate`]), wind, [`Field::LandingHeight`] not finite,
     /// [`Field::TimeLimit`] not finite and positive, [`Field::Gravity`] not finite or
     /// negative, [`Field::LaunchPosition`] not finite.
     pub fn prepare(&self, ball: &Ball<T>) -> Result<PreparedScene<T>> {
@@ -146,18 +145,12 @@ impl<T: Real> Scene<T> {
         if !(launch_position.amax() <= max_height) {
             return Err(Error::invalid(Field::LaunchPosition, Reason::OutOfRange));
         }
-        let r = ball.radius_m();
-        let half_rho_area = lit::<T>(0.5) * density * T::pi() * r * r;
-        let a = half_rho_area / ball.mass_kg();
+        let viscosity = self.air.dynamic_viscosity_pas()?;
+        let aero = self.aero.prepare(ball, density, viscosity)?;
         Ok(PreparedScene {
             effects: self.effects,
             gravity,
-            drag_v: a * lit(crate::aero::CD0),
-            drag_s: a * lit::<T>(crate::aero::CD_SP) * r,
-            lift_v: a * lit(crate::aero::CL0),
-            lift_s: a * lit::<T>(crate::aero::CL_SP) * r,
-            decay: half_rho_area * lit::<T>(crate::aero::CM_SP) * r * ball.diameter_m()
-                / ball.inertia_kgm2(),
+            aero,
             wind,
             landing_height,
             time_limit,
@@ -297,11 +290,18 @@ mod tests {
     #[test]
     fn coefficients() {
         let ball = Ball::<f64>::standard();
-        let Ok(p) = Scene::default().prepare(&ball) else {
+        let scene = Scene {
+            aero: AeroModel::quintavalla(),
+            ..Scene::default()
+        };
+        let Ok(p) = scene.prepare(&ball) else {
             panic!()
         };
         let a = 0.5 * 1.225 * core::f64::consts::PI * 0.021336_f64.powi(2) / 0.04593;
-        assert!((p.drag_v - a * 0.171).abs() < 1e-15);
+        let crate::aero::model::Forces::Linear { drag_v, .. } = p.aero.forces else {
+            panic!()
+        };
+        assert!((drag_v - a * 0.171).abs() < 1e-15);
         assert!(!p.has_wind());
     }
 }

@@ -12,6 +12,7 @@ use carry_core::flight::{self, Integrator};
 use carry_core::impact::{self, ContactLaw, Solver};
 use carry_core::presets::FITTED_CONTACT;
 use carry_core::real::{Real, lit};
+use carry_core::aero::AeroModel;
 use carry_core::scene::{Effects, Scene};
 use carry_core::units::{deg, rpm};
 use carry_core::wind::Wind;
@@ -304,6 +305,8 @@ impl FlightInput {
             None => Wind::Uniform(w),
         };
         Scene {
+            // The golden files pin the seed's aerodynamics.
+            aero: AeroModel::quintavalla(),
             effects: Effects {
                 drag: self.drag,
                 lift: self.lift,

@@ -260,6 +260,11 @@ pub struct SceneArgs {
     /// No spin decay (spin stays at its launch value).
     #[arg(long)]
     pub no_spin_decay: bool,
+    /// Aerodynamic model: `tour2023` (default: the modern model calibrated on TrackMan's
+    /// 2023 tour averages), `quintavalla` (the seed model of PHYSICS.md), or a model file
+    /// written by `carry fit --output`.
+    #[arg(long, value_name = "NAME|FILE.toml")]
+    pub aero: Option<String>,
 }
 
 /// Precision option.
@@ -472,6 +477,10 @@ pub enum BenchCmd {
         /// A quick, smaller study.
         #[arg(long)]
         quick: bool,
+        /// Aerodynamic model of the study's shots (the golden flights keep the seed's):
+        /// `tour2023` (default), `quintavalla` or a model file.
+        #[arg(long, value_name = "NAME|FILE.toml")]
+        aero: Option<String>,
     },
 }
 
@@ -570,6 +579,10 @@ impl SceneArgs {
         put(p, u, Key::WindExponent, self.wind_exponent);
         put(p, u, Key::LandingHeight, self.landing_height);
         put(p, u, Key::TimeLimit, self.time_limit);
+        if let Some(aero) = &self.aero {
+            let model = Key::Aero.parse(aero)?;
+            Key::Aero.set(p, u, model);
+        }
         for (flag, key) in [
             (self.no_drag, Key::NoDrag),
             (self.no_lift, Key::NoLift),

@@ -16,7 +16,6 @@ pub mod params;
 pub mod plot;
 pub mod report;
 pub mod scene;
-pub mod study;
 pub mod units;
 
 use clap::Parser as _;
@@ -208,8 +207,25 @@ fn dispatch(cli: Cli) -> Result<(), Failure> {
             }
             .as_bytes(),
         ),
-        Command::Bench(BenchCmd::Accuracy { json, svg, quick }) => {
-            study::run(&study::StudyOptions { json, svg, quick }).map_err(Failure::Other)
+        Command::Bench(BenchCmd::Accuracy {
+            json,
+            svg,
+            quick,
+            aero,
+        }) => {
+            let aero = match aero {
+                Some(a) => carry_lab::aero_file::resolve(&a)
+                    .map_err(|e| Failure::Input(error::InputError::new("aero", e)))?,
+                None => carry_core::aero::AeroModel::default(),
+            };
+            let options = carry_lab::study::StudyOptions {
+                json,
+                svg,
+                quick,
+                aero,
+            };
+            let text = carry_lab::study::run(&options).map_err(Failure::Other)?;
+            write_stdout(text.as_bytes())
         }
     }
 }

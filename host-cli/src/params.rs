@@ -6,6 +6,7 @@
 
 use crate::error::InputError;
 use crate::units::{Quantity, Units};
+use carry_core::aero::AeroModel;
 use carry_core::impact::ContactLaw;
 use carry_core::{PRESETS, Preset};
 
@@ -114,6 +115,8 @@ pub struct SceneParams {
     pub no_lift: bool,
     /// Disable spin decay.
     pub no_spin_decay: bool,
+    /// The aerodynamic model (`None`: the calibrated default).
+    pub aero: Option<AeroModel<f64>>,
 }
 
 /// Everything one shot needs (numerics are global, see [`crate::compute::Numerics`]).
@@ -202,6 +205,8 @@ pub enum Kind {
     Preset,
     /// A contact-law name or TOML file.
     Contact,
+    /// An aerodynamic model: a built-in name or a model file.
+    Aero,
     /// `true`/`false`/`1`/`0`/`yes`/`no`.
     Bool,
 }
@@ -295,6 +300,7 @@ keys! {
     NoDrag = "no_drag", Bool, Plain;
     NoLift = "no_lift", Bool, Plain;
     NoSpinDecay = "no_spin_decay", Bool, Plain;
+    Aero = "aero", Aero, Plain;
 }
 
 /// A parsed value.
@@ -310,6 +316,8 @@ pub enum Value {
     Preset(&'static Preset),
     /// A contact law.
     Contact(ContactLaw<f64>),
+    /// An aerodynamic model.
+    Aero(AeroModel<f64>),
     /// A switch.
     Bool(bool),
 }
@@ -341,6 +349,9 @@ impl Key {
             Kind::Tensor => parse_tensor(text).map(Value::Tensor).map_err(err),
             Kind::Preset => parse_preset(text).map(Value::Preset).map_err(err),
             Kind::Contact => crate::contact::parse(text).map(Value::Contact).map_err(err),
+            Kind::Aero => carry_lab::aero_file::resolve(text.trim())
+                .map(Value::Aero)
+                .map_err(err),
             Kind::Bool => parse_bool(text).map(Value::Bool).map_err(err),
         }
     }
@@ -421,6 +432,7 @@ impl Key {
                 c.named = true;
             }
             Value::Contact(law) => c.contact = Some(law),
+            Value::Aero(model) => s.aero = Some(model),
             Value::Bool(b) => match self {
                 Key::NoDrag => s.no_drag = b,
                 Key::NoLift => s.no_lift = b,

@@ -12,6 +12,7 @@
 use crate::error::InputError;
 use crate::params::{Key, Kind, Params, SceneParams, Value};
 use crate::units::Units;
+use carry_core::aero::AeroModel;
 use carry_core::air::{Pressure, Weather};
 use carry_core::real::lit;
 use carry_core::units::deg;
@@ -43,6 +44,7 @@ pub const SCENE_KEYS: &[Key] = &[
     Key::NoDrag,
     Key::NoLift,
     Key::NoSpinDecay,
+    Key::Aero,
 ];
 
 fn v3<T: Real>(v: [f64; 3]) -> Vector3<T> {
@@ -126,6 +128,7 @@ pub fn build<T: Real>(s: &SceneParams) -> Result<Scene<T>, InputError> {
         (None, false) => Wind::None,
     };
     let mut scene = Scene {
+        aero: s.aero.map_or_else(AeroModel::default, |m| m.cast()),
         effects: Effects {
             drag: !s.no_drag,
             lift: !s.no_lift,
@@ -190,6 +193,18 @@ pub fn load_file(path: &Path, units: Units, params: &mut Params) -> Result<(), I
             }
         };
         let parsed = match (key.kind(), value) {
+            (Kind::Aero, toml::Value::String(name)) => {
+                // A model file named relative to the scene file.
+                let relative = path.parent().map(|d| d.join(name));
+                let name = match relative {
+                    Some(r) if AeroModel::<f64>::named(name).is_none() && r.exists() => {
+                        r.display().to_string()
+                    }
+                    _ => name.clone(),
+                };
+                key.parse(&name)?
+            }
+            (Kind::Aero, _) => return Err(bad("must be a model name or a file path (a string)")),
             (Kind::Bool, toml::Value::Boolean(b)) => Value::Bool(*b),
             (Kind::Bool, _) => return Err(bad("must be true or false")),
             (Kind::Vector, toml::Value::Array(a)) if a.len() == 3 => {

@@ -233,7 +233,13 @@ fn impact_golden_cases_match_through_the_json_contract() {
 fn flight_args(case: &Value) -> Vec<String> {
     let l = &case["launch"];
     let s = &case["scene"];
-    let mut a: Vec<String> = vec!["flight".into(), "--json".into()];
+    // The golden files pin the seed's aerodynamics.
+    let mut a: Vec<String> = vec![
+        "flight".into(),
+        "--json".into(),
+        "--aero".into(),
+        "quintavalla".into(),
+    ];
     let mut opt = |name: &str, value: String| {
         a.push(format!("--{name}"));
         a.push(value);
@@ -343,7 +349,15 @@ fn flight_golden_cases_match_within_a_millimetre() {
 
 #[test]
 fn shot_is_the_union_of_impact_and_flight_and_matches_the_reference() {
-    let shot = json(&["shot", "--json", "--contact", "rolling"]);
+    // The golden reference: the seed's contact and aerodynamics.
+    let shot = json(&[
+        "shot",
+        "--json",
+        "--aero",
+        "quintavalla",
+        "--contact",
+        "rolling",
+    ]);
     let impact = json(&["impact", "--json", "--contact", "rolling"]);
     assert_eq!(shot["launch"], impact["launch"]);
     assert_eq!(shot["club_after"], impact["club_after"]);
@@ -399,14 +413,10 @@ fn the_readme_main_job_runs() {
     let r = run(&["shot"]);
     assert_eq!(r.code, 0, "{}", r.stderr);
     assert!(r.stdout.contains("carry"), "{}", r.stdout);
-    // the seed's model gives PHYSICS.md's reference carry
-    let r = run(&["shot", "--contact", "rolling"]);
-    assert!(
-        r.stdout.contains("carry") && r.stdout.contains("199.7"),
-        "{}",
-        r.stdout
-    );
     assert!(r.stderr.is_empty());
+    // PHYSICS.md's reference carry, with the seed's contact and aerodynamics.
+    let seed = run(&["shot", "--aero", "quintavalla", "--contact", "rolling"]);
+    assert!(seed.stdout.contains("199.7"), "{}", seed.stdout);
 }
 
 // ---------------------------------------------------------------- precision, solver, integrators, units
@@ -474,7 +484,14 @@ fn f32_and_full_solver_and_integrators_agree() {
             0.05,
         );
     }
-    let tight = json(&["flight", "--json", "--tolerance", "1e-10"]);
+    let tight = json(&[
+        "flight",
+        "--json",
+        "--tolerance",
+        "1e-10",
+        "--aero",
+        "quintavalla",
+    ]);
     close(
         "tight tolerance",
         num(&tight["flight"]["carry_m"]),
@@ -519,7 +536,15 @@ fn imperial_input_equals_si_input_and_json_stays_si() {
         num(&si["flight"]["carry_m"]),
         1e-6,
     );
-    let table = run(&["flight", "--units", "imperial", "--ball-speed", "167"]);
+    let table = run(&[
+        "flight",
+        "--units",
+        "imperial",
+        "--ball-speed",
+        "167",
+        "--aero",
+        "quintavalla",
+    ]);
     assert!(
         table.stdout.contains("mph") && table.stdout.contains("yd") && table.stdout.contains("ft")
     );
@@ -1043,7 +1068,14 @@ fn batch_reads_stdin_and_imperial() {
 
 #[test]
 fn csv_output_has_the_contract_columns() {
-    let r = run(&["shot", "--csv", "--contact", "rolling"]);
+    let r = run(&[
+        "shot",
+        "--csv",
+        "--aero",
+        "quintavalla",
+        "--contact",
+        "rolling",
+    ]);
     assert_eq!(r.code, 0);
     let lines: Vec<&str> = r.stdout.lines().collect();
     assert_eq!(lines.len(), 2);

@@ -10,6 +10,7 @@ use carry_core::air::{Air, Pressure, Weather};
 use carry_core::flight::{Integrator, Recorder, Sample, fly};
 use carry_core::impact::{self, CompliantContact, ContactLaw, Solver};
 use carry_core::linalg::Pivoting;
+use carry_core::aero::AeroModel;
 use carry_core::scene::{Effects, Scene};
 use carry_core::wind::Wind;
 use carry_core::{
@@ -168,7 +169,13 @@ fn flight_paths<T: Real>() -> T {
             exponent: x(1.0 / 7.0),
         },
     };
+    let aero = if black_box(true) {
+        AeroModel::tour_2023()
+    } else {
+        AeroModel::quintavalla()
+    };
     let scene = Scene {
+        aero,
         effects: Effects {
             drag: black_box(true),
             lift: black_box(true),

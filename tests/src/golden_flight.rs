@@ -3,6 +3,7 @@
 //! landing event). Launches are in launch-monitor units (deg, rpm); the expected values are
 //! SI except angles (deg) and spin (rpm).
 
+use carry_core::aero::AeroModel;
 use carry_core::air::{Air, Pressure, Weather};
 use carry_core::real::lit;
 use carry_core::units::{deg, rpm};
@@ -158,6 +159,8 @@ impl GoldenScene {
             None => Wind::Uniform(w),
         };
         Scene {
+            // The golden files pin the seed's aerodynamics.
+            aero: AeroModel::quintavalla(),
             effects: Effects {
                 drag: self.effects.drag,
                 lift: self.effects.lift,

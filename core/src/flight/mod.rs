@@ -1,7 +1,7 @@
 //! Ball flight: from launch conditions to where and how the ball lands (PHYSICS.md,
 //! "Flight").
 //!
-//! The model is Quintavalla's (see [`crate::aero`]) with the effects, air and wind a
+//! The aerodynamic model is the one the [`Scene`] holds (see [`crate::aero`]) with the effects, air and wind a
 //! [`Scene`] asks for. The state (position, velocity, spin magnitude about the fixed spin
 //! axis) is integrated by an [`Integrator`] — explicit Euler, classical RK4 or adaptive
 //! Dormand–Prince 5(4) — and the landing and the apex are located *inside* the step by
@@ -9,10 +9,13 @@
 //! highest sample. Every result reports the number of force evaluations it cost.
 //!
 //! ```
-//! use carry_core::{Ball, Launch, flight::{self, Integrator}, scene::Scene, units::{deg, rpm}};
+//! use carry_core::{Ball, Launch, aero::AeroModel, flight::{self, Integrator}, scene::Scene,
+//!     units::{deg, rpm}};
 //! let launch = Launch { ball_speed_mps: 74.65568_f64, launch_angle_rad: deg(10.9),
 //!     launch_direction_rad: 0.0, backspin_radps: rpm(2686.0), sidespin_radps: 0.0 };
-//! let out = flight::fly(&Ball::standard(), &launch.ball_motion()?, &Scene::default(),
+//! // PHYSICS.md's reference figure is the seed model's (Quintavalla).
+//! let seed = Scene { aero: AeroModel::quintavalla(), ..Scene::default() };
+//! let out = flight::fly(&Ball::standard(), &launch.ball_motion()?, &seed,
 //!     &Integrator::default(), None)?;
 //! assert!((out.carry_m - 247.503).abs() < 1e-3);
 //! # Ok::<(), carry_core::Error>(())

@@ -30,6 +30,7 @@ pub fn measure(
     quick: bool,
     p64: &[shots::Prepared<f64>],
     budget: Budget,
+    aero: &carry_core::aero::AeroModel<f64>,
 ) -> Result<Scaling, String> {
     use carry_core::flight::Integrator;
     let methods: [(&str, Integrator<f64>); 3] = [
@@ -38,7 +39,10 @@ pub fn measure(
         ("dp45 default", Integrator::default()),
     ];
     let ball = carry_core::Ball::<f64>::standard();
-    let scene = carry_core::Scene::<f64>::default();
+    let scene = carry_core::Scene::<f64> {
+        aero: *aero,
+        ..carry_core::Scene::default()
+    };
     let mut flight_time = Vec::new();
     for launch in shots::scaling_launches(quick) {
         let motion = launch.ball_motion().map_err(|e| e.to_string())?;

@@ -1,5 +1,9 @@
-//! The aerodynamic model of Quintavalla (2002), "A generally applicable model for the
-//! aerodynamic behavior of golf balls", Science and Golf IV, 341–348 (PHYSICS.md):
+//! Aerodynamics: the models a scene can hold ([`AeroModel`]) and the flight's right-hand
+//! side. Families: the seed's linear one ([`LinearAero`]; Quintavalla's coefficients are
+//! the seed model) and the modern one ([`ModernAero`]; the calibrated default
+//! `tour2023`). Every family has the structure of Quintavalla (2002), "A generally
+//! applicable model for the aerodynamic behavior of golf balls", Science and Golf IV,
+//! 341–348 (PHYSICS.md), shown here with the seed's coefficients:
 //!
 //! ```text
 //! v_r = v − w,  V = |v_r|,  Sp = |ω|·R / V
@@ -22,38 +26,21 @@
 //! only the magnitude `s` is integrated: the state is position, velocity and `s`
 //! (7 numbers), and the spin vector at any time is `s · ω̂`.
 
-use crate::real::{Real, lit};
+mod linear;
+pub(crate) mod model;
+mod modern;
+
+pub use linear::{
+    CD_SP, CD0, CL_SP, CL0, CM_SP, LINEAR_NAMES, LinearAero, MAX_LINEAR_COEFFICIENT,
+    drag_coefficient, lift_coefficient, moment_coefficient,
+};
+pub(crate) use model::PreparedAero;
+pub use model::{AeroModel, BUILT_IN_MODELS};
+pub use modern::{MODERN_NAMES, ModernAero, TOUR_2023};
+
+use crate::real::Real;
 use crate::scene::PreparedScene;
 use nalgebra::Vector3;
-
-/// Quintavalla's drag coefficient at zero spin.
-pub const CD0: f64 = 0.171;
-/// Quintavalla's drag coefficient slope in the spin parameter.
-pub const CD_SP: f64 = 0.62;
-/// Quintavalla's lift coefficient at zero spin (for ω ≠ 0).
-pub const CL0: f64 = 0.083;
-/// Quintavalla's lift coefficient slope in the spin parameter.
-pub const CL_SP: f64 = 0.885;
-/// Quintavalla's spin-decay (moment) coefficient slope in the spin parameter.
-pub const CM_SP: f64 = 0.0125;
-
-/// Drag coefficient `C_D = 0.171 + 0.62 Sp`.
-#[must_use]
-pub fn drag_coefficient<T: Real>(spin_parameter: T) -> T {
-    lit::<T>(CD0) + lit::<T>(CD_SP) * spin_parameter
-}
-
-/// Lift coefficient `C_L = 0.083 + 0.885 Sp` (the lift itself is zero when ω = 0).
-#[must_use]
-pub fn lift_coefficient<T: Real>(spin_parameter: T) -> T {
-    lit::<T>(CL0) + lit::<T>(CL_SP) * spin_parameter
-}
-
-/// Moment coefficient of the spin-decay torque `C_M = 0.0125 Sp`.
-#[must_use]
-pub fn moment_coefficient<T: Real>(spin_parameter: T) -> T {
-    lit::<T>(CM_SP) * spin_parameter
-}
 
 /// The integrated state: position (m) 0..3, velocity (m/s) 3..6, spin magnitude (rad/s) 6.
 pub(crate) type State<T> = [T; 7];
@@ -103,13 +90,13 @@ impl<T: Real> Dynamics<'_, T> {
             let vr = if wind { v - p.wind.at(y[Y]) } else { v };
             let speed = vr.norm_squared().sqrt();
             if drag {
-                a -= vr * (p.drag_v * speed + p.drag_s * s);
+                a -= vr * p.aero.forces.drag(speed, s);
             }
             if lift {
-                a += self.axis.cross(&vr) * (p.lift_v * speed + p.lift_s * s);
+                a += self.axis.cross(&vr) * p.aero.forces.lift(speed, s);
             }
             if decay {
-                ds = -p.decay * speed * s;
+                ds = -p.aero.decay * speed * s;
             }
         }
         [v.x, v.y, v.z, a.x, a.y, a.z, ds]
@@ -185,23 +172,38 @@ mod tests {
 
     #[test]
     fn matches_the_coefficient_form() {
-        // Direct evaluation of q·C·direction against the divided-out hot-loop form.
+        // Direct evaluation of q·C·direction against the divided-out hot-loop form, for
+        // every family, including the modern one's drag crisis (low speed).
         let ball = Ball::<f64>::standard();
-        let Ok(p) = Scene::default().prepare(&ball) else {
-            panic!()
-        };
-        let axis = Vector3::new(0.1, -0.2, 0.97).normalize();
-        let (v, s) = (Vector3::new(60.0, 9.0, -3.0), 250.0);
-        let d = Dynamics { scene: &p, axis };
-        let f = d.eval(&[0.0, 0.0, 0.0, v.x, v.y, v.z, s]);
-        let big_v = v.norm();
-        let sp = s * ball.radius_m() / big_v;
-        let q = 0.5 * 1.225 * core::f64::consts::PI * ball.radius_m().powi(2) * big_v * big_v;
-        let force = -v / big_v * q * drag_coefficient(sp)
-            + axis.cross(&(v / big_v)) * q * lift_coefficient(sp);
-        let a = force / ball.mass_kg() - Vector3::new(0.0, 9.80665, 0.0);
-        assert!((Vector3::new(f[3], f[4], f[5]) - a).norm() < 1e-12);
-        let torque = q * moment_coefficient(sp) * ball.diameter_m();
-        assert!((f[6] + torque / ball.inertia_kgm2()).abs() < 1e-10);
+        for model in [AeroModel::quintavalla(), AeroModel::tour_2023()] {
+            let scene = Scene {
+                aero: model,
+                ..Scene::default()
+            };
+            let Ok(p) = scene.prepare(&ball) else {
+                panic!()
+            };
+            let mu = crate::air::STANDARD_VISCOSITY_PAS;
+            let axis = Vector3::new(0.1, -0.2, 0.97).normalize();
+            for (v, s) in [
+                (Vector3::new(60.0, 9.0, -3.0), 250.0),
+                (Vector3::new(15.0, -9.0, 3.0), 400.0),
+                (Vector3::new(30.0, 1.0, 0.0), 0.0),
+            ] {
+                let d = Dynamics { scene: &p, axis };
+                let f = d.eval(&[0.0, 0.0, 0.0, v.x, v.y, v.z, s]);
+                let big_v = v.norm();
+                let sp = s * ball.radius_m() / big_v;
+                let re = 1.225 * big_v * ball.diameter_m() / mu;
+                let (cd, cl, cm) = model.coefficients(sp, re);
+                let q =
+                    0.5 * 1.225 * core::f64::consts::PI * ball.radius_m().powi(2) * big_v * big_v;
+                let force = -v / big_v * q * cd + axis.cross(&(v / big_v)) * q * cl;
+                let a = force / ball.mass_kg() - Vector3::new(0.0, 9.80665, 0.0);
+                assert!((Vector3::new(f[3], f[4], f[5]) - a).norm() < 1e-12);
+                let torque = q * cm * ball.diameter_m();
+                assert!((f[6] + torque / ball.inertia_kgm2()).abs() < 1e-10);
+            }
+        }
     }
 }

@@ -3,13 +3,14 @@
 use super::measure::{self, Budget};
 use super::report::{ReferenceShot, ShotInfo, Study};
 use super::{conclusions, pareto, reference, scaling, shots, sweep};
+use carry_core::aero::AeroModel;
 
 /// Runs the study: the reference and its check, the sweep, the scaling, the conclusions.
 ///
 /// # Errors
 /// A failing reference (a bug) or scaling launch.
-pub fn build(quick: bool) -> Result<Study, String> {
-    let shots = shots::shot_set(quick)?;
+pub fn build(quick: bool, aero: &AeroModel<f64>) -> Result<Study, String> {
+    let shots = shots::shot_set(quick, aero)?;
     let p64 = measure::prepare_all::<f64>(&shots)?;
     let p32 = measure::prepare_all::<f32>(&shots)?;
     let budget = if quick {
@@ -31,7 +32,7 @@ pub fn build(quick: bool) -> Result<Study, String> {
     let mut rows = sweep::flight(quick, &shots, &p64, &p32, &reference, budget);
     pareto::mark(&mut rows);
 
-    let scaling = scaling::measure(quick, &p64, budget)?;
+    let scaling = scaling::measure(quick, &p64, budget, aero)?;
     let mut study = Study {
         quick,
         timing: format!(

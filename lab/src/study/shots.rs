@@ -12,6 +12,7 @@
 //! * 12 full shots of our own (3-wood, 5-iron, 7-iron into a headwind, wedges, a chip, a
 //!   slice and a hook, a crosswind profile, altitude, downhill with a tailwind).
 
+use carry_core::aero::AeroModel;
 use carry_core::air::{Air, Pressure, Weather};
 use carry_core::real::lit;
 use carry_core::units::{deg, rpm};
@@ -28,6 +29,9 @@ const IMPACT_JSON: &str = include_str!("../../../tests/golden/impact.json");
 /// The scene of a shot, in `f64`.
 #[derive(Debug, Clone, Copy)]
 pub struct SceneSpec {
+    /// The aerodynamic model: the seed's for the golden flights (they pin it), the study's
+    /// chosen model for the rest ([`shot_set`]).
+    pub aero: AeroModel<f64>,
     pub effects: Effects,
     pub air: Air<f64>,
     pub wind: Wind<f64>,
@@ -37,6 +41,7 @@ pub struct SceneSpec {
 impl Default for SceneSpec {
     fn default() -> Self {
         Self {
+            aero: AeroModel::quintavalla(),
             effects: Effects::ALL,
             air: Air::default(),
             wind: Wind::None,
@@ -77,6 +82,7 @@ impl SceneSpec {
             },
         };
         Scene {
+            aero: self.aero.cast(),
             effects: self.effects,
             air,
             wind,
@@ -412,6 +418,7 @@ fn golden_flights() -> Result<Vec<Shot>, String> {
             origin: Origin::GoldenFlight,
             start: Start::Launch(launch),
             scene: SceneSpec {
+                aero: AeroModel::quintavalla(),
                 effects,
                 air,
                 wind,
@@ -687,14 +694,19 @@ const QUICK: [&str; 8] = [
     "study_5iron",
 ];
 
-/// The shot set: everything, or the quick subset.
+/// The shot set: everything, or the quick subset. The golden flights keep the seed's
+/// aerodynamics (the golden files pin it); every other shot flies with `aero`.
 ///
 /// # Errors
 /// A malformed golden file (a build problem).
-pub fn shot_set(quick: bool) -> Result<Vec<Shot>, String> {
+pub fn shot_set(quick: bool, aero: &AeroModel<f64>) -> Result<Vec<Shot>, String> {
     let mut all = golden_flights()?;
-    all.extend(golden_impacts()?);
-    all.extend(own_shots());
+    let mut rest = golden_impacts()?;
+    rest.extend(own_shots());
+    for s in &mut rest {
+        s.scene.aero = *aero;
+    }
+    all.extend(rest);
     if quick {
         all.retain(|s| QUICK.contains(&s.name.as_str()));
     }

@@ -1,4 +1,4 @@
-//! `carry bench accuracy`: the accuracy–cost study (issue 6; report in docs/accuracy.md).
+//! The accuracy–cost study behind `carry bench accuracy` (report in docs/accuracy.md).
 //!
 //! * **Reference**: every shot in `f64` with the full 15×15 impact solver and
 //!   Dormand–Prince at a tolerance of 1e-12, checked against the golden files.
@@ -30,7 +30,6 @@ mod table;
 use measure::{Prec, SolverKind};
 use report::Study;
 use std::fmt::Write as _;
-use std::io::Write as _;
 use std::path::PathBuf;
 
 /// Options of the accuracy study.
@@ -42,22 +41,25 @@ pub struct StudyOptions {
     pub svg: Option<PathBuf>,
     /// A quick, smaller study.
     pub quick: bool,
+    /// The aerodynamic model of every shot but the golden flights (which keep the seed's).
+    pub aero: carry_core::aero::AeroModel<f64>,
 }
 
 /// The "default fidelity" target: carry within 1 cm of the reference on every shot.
 pub const CARRY_TARGET_M: f64 = 0.01;
 
-/// Runs the accuracy study.
+/// Runs the accuracy study and renders it: a table, or JSON with `options.json`; writes
+/// the SVG chart when asked. The caller prints the returned text.
 ///
 /// # Errors
-/// A failing reference (a bug), or failing to write the SVG or standard output.
-pub fn run(options: &StudyOptions) -> Result<(), String> {
-    let study = assemble::build(options.quick)?;
+/// A failing reference (a bug), or failing to write the SVG.
+pub fn run(options: &StudyOptions) -> Result<String, String> {
+    let study = assemble::build(options.quick, &options.aero)?;
     if let Some(path) = &options.svg {
         chart::draw(path, &chart_points(&study))
             .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
     }
-    let text = if options.json {
+    Ok(if options.json {
         let mut s = serde_json::to_string_pretty(&study).map_err(|e| e.to_string())?;
         s.push('\n');
         s
@@ -67,12 +69,7 @@ pub fn run(options: &StudyOptions) -> Result<(), String> {
             let _ = writeln!(s, "\nwrote {}", path.display());
         }
         s
-    };
-    let mut out = std::io::stdout().lock();
-    match out.write_all(text.as_bytes()).and_then(|()| out.flush()) {
-        Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => Err(e.to_string()),
-        _ => Ok(()),
-    }
+    })
 }
 
 /// The chart's points: every setting that succeeded on every shot.
