@@ -136,3 +136,18 @@ fn batch_takes_a_contact_column() {
             .is_some_and(|e| e.contains("contact"))
     );
 }
+
+/// The file the lab's fit writes reads back as the same law.
+#[test]
+fn the_fit_output_reads_back() {
+    let text = carry_lab::fit::impact::to_toml(&carry_core::presets::FITTED_CONTACT, "fitted");
+    let file = temp_file("fitted.toml", &text);
+    let from_file = json(&[
+        "impact",
+        "--json",
+        "--contact",
+        file.to_str().expect("utf-8"),
+    ]);
+    let named = json(&["impact", "--json", "--contact", "compliant"]);
+    assert_eq!(from_file["launch"], named["launch"]);
+}
