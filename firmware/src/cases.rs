@@ -7,12 +7,12 @@
 //! `core`, `carry-core` and `nalgebra`.
 #![allow(dead_code)]
 
+use carry_core::aero::AeroModel;
 use carry_core::air::{Air, Pressure, Weather};
 use carry_core::flight::{self, Integrator};
 use carry_core::impact::{self, ContactLaw, Solver};
 use carry_core::presets::FITTED_CONTACT;
 use carry_core::real::{Real, lit};
-use carry_core::aero::AeroModel;
 use carry_core::scene::{Effects, Scene};
 use carry_core::units::{deg, rpm};
 use carry_core::wind::Wind;

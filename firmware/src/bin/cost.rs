@@ -180,6 +180,23 @@ fn suite<T: Real>(ticks: &Ticks, k: &mut u32, p: &str) {
                 .map(|o| (o.flight.stats.force_evaluations, to_f64(o.flight.carry_m)))
         },
     );
+    op(
+        ticks,
+        k,
+        label!("FULL SHOT: shot::play, compliant contact"),
+        1,
+        &mut || {
+            carry_core::shot::play(
+                &compliant_club,
+                &ball,
+                &delivery,
+                &prepared,
+                &fidelity,
+                None,
+            )
+            .map(|o| (o.flight.stats.force_evaluations, to_f64(o.flight.carry_m)))
+        },
+    );
     // A launch monitor's everyday delivery: every angle non-zero, an off-centre strike
     // (the reference delivery's zero angles make the five sin/cos of `strike` trivial).
     let mut everyday = delivery;
