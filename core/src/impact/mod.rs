@@ -14,6 +14,11 @@
 //! eliminates the 15×15 system ([`full`]); [`Solver::Reduced`] solves the 3×3
 //! collision-matrix form `K P = −u⁰ − e (n·u⁰) n` ([`reduced`]).
 //!
+//! The contact conditions above are the seed's law, [`ContactLaw::Rolling`]. The club may
+//! hold [`ContactLaw::Compliant`] instead ([`contact_law`]: Coulomb friction cone,
+//! tangential restitution, speed-dependent COR, energy never increases), which the reduced
+//! solver computes from the same `K`; the full solver supports only the seed's law.
+//!
 //! Source: N. Petersen & J. McPhee, "Shape optimization of golf clubface using finite
 //! element impact models", Sports Engineering 12 (2009); the impulse–momentum model of
 //! their three-dimensional club–ball impact.
