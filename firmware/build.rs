@@ -15,7 +15,10 @@ use std::path::{Path, PathBuf};
 
 #[path = "src/cases.rs"]
 mod cases;
+#[path = "src/ground_cases.rs"]
+mod ground_cases;
 
+use carry_core::aero::AeroModel;
 use cases::{FLIGHT_OUTPUTS, FlightInput, IMPACT_OUTPUTS, ImpactInput};
 use serde_json::Value;
 
@@ -44,9 +47,11 @@ fn main() {
     );
     impact(&read_json(&golden.join("impact.json")), &mut code);
     flight(&read_json(&golden.join("flight.json")), &mut code);
+    ground(&mut code);
     std::fs::write(out.join("golden_data.rs"), code).unwrap();
     println!("cargo::rerun-if-changed={}", golden.display());
     println!("cargo::rerun-if-changed=src/cases.rs");
+    println!("cargo::rerun-if-changed=src/ground_cases.rs");
     println!("cargo::rerun-if-changed=build.rs");
 }
 
@@ -252,12 +257,21 @@ fn flight(root: &Value, code: &mut String) {
             .iter()
             .map(|(_, i)| host::<f64, FLIGHT_OUTPUTS>(input.outputs(i), bits64))
             .collect();
+        // The calibrated default model at the default fidelity.
+        let tour32 = host::<f32, FLIGHT_OUTPUTS>(
+            input.outputs_with(&carry_core::Integrator::default(), AeroModel::tour_2023()),
+            bits32,
+        );
+        let tour64 = host::<f64, FLIGHT_OUTPUTS>(
+            input.outputs_with(&carry_core::Integrator::default(), AeroModel::tour_2023()),
+            bits64,
+        );
         writeln!(
             code,
             "FlightCase {{ name: {name:?}, input: FlightInput {{ ball_speed_mps: {}, launch_angle_deg: {}, \
              launch_direction_deg: {}, backspin_rpm: {}, sidespin_rpm: {}, landing_height_m: {}, drag: {}, lift: {}, \
              spin_decay: {}, air_density_kgm3: {}, weather: {weather}, wind_mps: {}, wind_profile: {profile} }}, \
-             expected: {}, host_f32: [{}], host_f64: [{}] }},",
+             expected: {}, host_f32: [{}], host_f64: [{}], tour2023_f32: {tour32}, tour2023_f64: {tour64} }},",
             f(input.ball_speed_mps),
             f(input.launch_angle_deg),
             f(input.launch_direction_deg),
@@ -273,6 +287,23 @@ fn flight(root: &Value, code: &mut String) {
             hosts32.join(", "),
             hosts64.join(", "),
             name = c["name"].as_str().unwrap(),
+        )
+        .unwrap();
+    }
+    writeln!(code, "];").unwrap();
+}
+
+/// The host's results of the full shots with a ground (src/ground_cases.rs).
+fn ground(code: &mut String) {
+    use ground_cases::{GROUND_CASES, GROUND_OUTPUTS};
+    writeln!(code, "pub const GROUND: &[GroundHost] = &[").unwrap();
+    for c in &GROUND_CASES {
+        writeln!(
+            code,
+            "GroundHost {{ name: {:?}, host_f32: {}, host_f64: {} }},",
+            c.name,
+            host::<f32, GROUND_OUTPUTS>(c.outputs(), bits32),
+            host::<f64, GROUND_OUTPUTS>(c.outputs(), bits64),
         )
         .unwrap();
     }

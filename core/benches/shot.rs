@@ -221,7 +221,48 @@ fn peer_launches(c: &mut Criterion) {
     group.finish();
 }
 
+/// The ground effect's cost (issue 12): the default shot with no ground, then bouncing and
+/// rolling to rest on each surface (docs/ground.md). Target: ≤ 1.5× the shot without.
+fn ground<T: Real>(c: &mut Criterion, label: &str) {
+    use carry_core::ground::{Ground, Surface};
+    let Some((club, delivery)) = driver_shot::<T>() else {
+        return;
+    };
+    let ball = Ball::<T>::standard();
+    let mut group = c.benchmark_group(format!("shot_ground/{label}"));
+    let cases: [(&str, Option<Surface<T>>); 4] = [
+        ("none", None),
+        ("fairway", Some(Surface::FairwayFirm)),
+        ("green", Some(Surface::green())),
+        ("rough", Some(Surface::Rough)),
+    ];
+    for (name, surface) in cases {
+        let scene = Scene::<T> {
+            ground: surface.map(Ground::level),
+            ..Scene::default()
+        };
+        let Ok(scene) = scene.prepare(&ball) else {
+            return;
+        };
+        group.bench_function(name, |b| {
+            b.iter(|| {
+                shot(
+                    black_box(&club),
+                    black_box(&ball),
+                    black_box(&delivery),
+                    black_box(&scene),
+                    Solver::Reduced,
+                    &Integrator::default(),
+                )
+            })
+        });
+    }
+    group.finish();
+}
+
 fn shot_benches(c: &mut Criterion) {
+    ground::<f64>(c, "f64");
+    ground::<f32>(c, "f32");
     full_shot::<f64>(c, "f64");
     full_shot::<f32>(c, "f32");
     batch_size(c);

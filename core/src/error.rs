@@ -116,6 +116,19 @@ pub enum Field {
     ReynoldsNumber,
     /// Trajectory recording interval (s).
     RecordInterval,
+    // --- ground ---
+    /// Turf restitution at vanishing normal speed (0..1).
+    GroundRestitution,
+    /// Ball–turf friction coefficient.
+    GroundFriction,
+    /// Rolling resistance of the surface.
+    RollingResistance,
+    /// Crater scale of the surface.
+    CraterScale,
+    /// Green speed, stimpmeter reading (m).
+    Stimp,
+    /// Ground plane normal (slope).
+    GroundNormal,
     // --- numerics ---
     /// Integrator step size (s).
     Step,
@@ -249,6 +262,12 @@ impl Field {
             Self::SpinDecayCoefficient => "spin-decay coefficient",
             Self::ReynoldsNumber => "critical Reynolds number",
             Self::RecordInterval => "record interval",
+            Self::GroundRestitution => "ground restitution",
+            Self::GroundFriction => "ground friction",
+            Self::RollingResistance => "rolling resistance",
+            Self::CraterScale => "crater scale",
+            Self::Stimp => "stimp",
+            Self::GroundNormal => "ground slope",
             Self::Step => "step size",
             Self::Tolerance => "tolerance",
         }

@@ -42,11 +42,13 @@ mod validate;
 pub mod aero;
 pub mod air;
 pub mod flight;
+pub mod ground;
 pub mod scene;
 pub mod wind;
 
 pub use air::{Air, Pressure, Weather};
 pub use flight::{FlightOutcome, Integrator, Recorder, Sample, Stats, fly};
+pub use ground::{Ground, Rollout, RunEnd, Surface, Turf};
 pub use scene::{Effects, PreparedScene, Scene};
 pub use wind::Wind;
 // --- end flight ---

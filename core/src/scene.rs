@@ -11,6 +11,7 @@ use crate::aero::{AeroModel, PreparedAero};
 use crate::air::Air;
 use crate::ball::Ball;
 use crate::error::{Error, Field, Reason, Result};
+use crate::ground::{Ground, PreparedGround};
 use crate::real::{Real, lit};
 use crate::validate::{finite, finite_vector, non_negative, positive};
 use crate::wind::{Wind, WindField};
@@ -80,6 +81,9 @@ pub struct Scene<T: Real> {
     pub gravity_mps2: T,
     /// Where the ball starts (m, G): the tee. Carry and side are measured from here.
     pub launch_position_m: Vector3<T>,
+    /// The ground after the landing: `None` ends the shot at the first landing (carry);
+    /// a ground bounces and rolls the ball to rest ([`crate::ground`]).
+    pub ground: Option<Ground<T>>,
 }
 
 impl<T: Real> Default for Scene<T> {
@@ -96,6 +100,7 @@ impl<T: Real> Default for Scene<T> {
             time_limit_s: lit(DEFAULT_TIME_LIMIT_S),
             gravity_mps2: lit(STANDARD_GRAVITY_MPS2),
             launch_position_m: Vector3::zeros(),
+            ground: None,
         }
     }
 }
@@ -113,6 +118,7 @@ pub struct PreparedScene<T: Real> {
     pub(crate) time_limit: T,
     pub(crate) launch_position: Vector3<T>,
     pub(crate) density: T,
+    pub(crate) ground: Option<PreparedGround<T>>,
 }
 
 impl<T: Real> Scene<T> {
@@ -147,6 +153,10 @@ impl<T: Real> Scene<T> {
         }
         let viscosity = self.air.dynamic_viscosity_pas()?;
         let aero = self.aero.prepare(ball, density, viscosity)?;
+        let ground = match &self.ground {
+            Some(g) => Some(g.prepare(ball.radius_m())?),
+            None => None,
+        };
         Ok(PreparedScene {
             effects: self.effects,
             gravity,
@@ -156,6 +166,7 @@ impl<T: Real> Scene<T> {
             time_limit,
             launch_position,
             density,
+            ground,
         })
     }
 }
@@ -171,6 +182,12 @@ impl<T: Real> PreparedScene<T> {
     #[must_use]
     pub fn effects(&self) -> Effects {
         self.effects
+    }
+
+    /// The validated ground, if the scene has one.
+    #[must_use]
+    pub fn ground(&self) -> Option<&PreparedGround<T>> {
+        self.ground.as_ref()
     }
 
     /// The landing height (m).

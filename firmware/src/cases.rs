@@ -278,9 +278,15 @@ impl FlightInput {
         }
     }
 
-    /// The scene, precision `T`.
+    /// The scene, precision `T`, with the seed's aerodynamics (the golden files pin them).
     #[must_use]
     pub fn scene<T: Real>(&self) -> Scene<T> {
+        self.scene_with(AeroModel::quintavalla())
+    }
+
+    /// The scene, precision `T`, with the aerodynamic model `aero`.
+    #[must_use]
+    pub fn scene_with<T: Real>(&self, aero: AeroModel<T>) -> Scene<T> {
         let air = match (self.weather, self.air_density_kgm3) {
             (Some((t, rh, pa, alt)), _) => Air::Weather(Weather {
                 temperature_c: lit(t),
@@ -305,8 +311,7 @@ impl FlightInput {
             None => Wind::Uniform(w),
         };
         Scene {
-            // The golden files pin the seed's aerodynamics.
-            aero: AeroModel::quintavalla(),
+            aero,
             effects: Effects {
                 drag: self.drag,
                 lift: self.lift,
@@ -326,12 +331,19 @@ impl FlightInput {
     pub fn fly<T: Real>(
         &self,
         integrator: &Integrator<T>,
+        aero: AeroModel<T>,
     ) -> Result<flight::FlightOutcome<T>, Error> {
         let motion = self.launch::<T>().ball_motion()?;
-        flight::fly(&Ball::standard(), &motion, &self.scene(), integrator, None)
+        flight::fly(
+            &Ball::standard(),
+            &motion,
+            &self.scene_with(aero),
+            integrator,
+            None,
+        )
     }
 
-    /// [`Self::fly`], flattened (see [`FLIGHT_OUTPUTS`]).
+    /// [`Self::fly`] with the seed's aerodynamics, flattened (see [`FLIGHT_OUTPUTS`]).
     ///
     /// # Errors
     /// As [`Self::fly`].
@@ -339,7 +351,19 @@ impl FlightInput {
         &self,
         integrator: &Integrator<T>,
     ) -> Result<[T; FLIGHT_OUTPUTS], Error> {
-        let o = self.fly(integrator)?;
+        self.outputs_with(integrator, AeroModel::quintavalla())
+    }
+
+    /// [`Self::fly`] with the aerodynamic model `aero`, flattened.
+    ///
+    /// # Errors
+    /// As [`Self::fly`].
+    pub fn outputs_with<T: Real>(
+        &self,
+        integrator: &Integrator<T>,
+        aero: AeroModel<T>,
+    ) -> Result<[T; FLIGHT_OUTPUTS], Error> {
+        let o = self.fly(integrator, aero)?;
         let n = |x: u32| -> T { lit(f64::from(x)) };
         Ok([
             o.carry_m,

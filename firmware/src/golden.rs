@@ -51,6 +51,21 @@ pub struct FlightCase {
     pub host_f32: [Host<FLIGHT_OUTPUTS>; 3],
     /// Host results in f64, per integrator.
     pub host_f64: [Host<FLIGHT_OUTPUTS>; 3],
+    /// Host results in f32 with the calibrated model (`tour2023`), default fidelity.
+    pub tour2023_f32: Host<FLIGHT_OUTPUTS>,
+    /// Host results in f64 with the calibrated model (`tour2023`), default fidelity.
+    pub tour2023_f64: Host<FLIGHT_OUTPUTS>,
+}
+
+/// One full shot with a ground and the host's results (f32, f64).
+#[derive(Debug, Clone, Copy)]
+pub struct GroundHost {
+    /// Case name ([`crate::ground_cases::GROUND_CASES`], same order).
+    pub name: &'static str,
+    /// Host result in f32.
+    pub host_f32: Host<{ crate::ground_cases::GROUND_OUTPUTS }>,
+    /// Host result in f64.
+    pub host_f64: Host<{ crate::ground_cases::GROUND_OUTPUTS }>,
 }
 
 include!(concat!(env!("OUT_DIR"), "/golden_data.rs"));

@@ -12,9 +12,13 @@ use carry_core::units::deg;
 use carry_core::{Ball, ClubSpec, Delivery, FaceLocation, Result};
 use nalgebra::{Matrix3, Vector3};
 
-/// The f64 reference carry of the reference driver shot (m): `reference_driver_impact`
-/// in tests/golden/flight.json.
+/// The f64 reference carry of the reference driver shot (m) with the seed's aerodynamics:
+/// `reference_driver_impact` in tests/golden/flight.json.
 pub const REFERENCE_CARRY_M: f64 = 199.682_864_687_470_04;
+/// The f64 carry of the reference driver shot with the calibrated default aerodynamics
+/// (`tour2023`), at a tolerance of 1e-12 on the host:
+/// `carry shot --json --tolerance 1e-12`.
+pub const CALIBRATED_CARRY_M: f64 = 193.857_632_403_695_85;
 
 /// The precision of the size-probe and example binaries (`--features f64` for f64).
 #[cfg(not(feature = "f64"))]

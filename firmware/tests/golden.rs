@@ -18,7 +18,8 @@ use carry_firmware as _;
 
 use carry_core::Real;
 use carry_firmware::cases::{self, FLIGHT_NAMES, IMPACT_NAMES, SOLVERS, VARIANTS};
-use carry_firmware::golden::{Expected, FLIGHT, Host, IMPACT};
+use carry_firmware::golden::{Expected, FLIGHT, GROUND, Host, IMPACT};
+use carry_firmware::ground_cases::{GROUND_CASES, GROUND_NAMES};
 
 /// A precision the suite runs in.
 trait Precision: Real + defmt::Format {
@@ -124,6 +125,50 @@ fn flight_bit_identity<T: Precision>(
         "flight {=str}: {=u32} flights, {=u32} differ from the host",
         T::NAME,
         compared,
+        differ
+    );
+    defmt::assert_eq!(differ, 0);
+}
+
+fn calibrated_bit_identity<T: Precision>(
+    host: impl Fn(&carry_firmware::golden::FlightCase) -> &Host<13>,
+) {
+    let mut differ = 0u32;
+    for case in FLIGHT {
+        let target = case.input.outputs_with::<T>(
+            &carry_core::Integrator::default(),
+            carry_core::aero::AeroModel::tour_2023(),
+        );
+        if !identical(case.name, "tour2023", &FLIGHT_NAMES, &target, host(case)) {
+            differ += 1;
+        }
+    }
+    defmt::info!(
+        "flight {=str} tour2023: {=u32} flights, {=u32} differ from the host",
+        T::NAME,
+        FLIGHT.len() as u32,
+        differ
+    );
+    defmt::assert_eq!(differ, 0);
+}
+
+/// Full shots with a ground (bounces, hops with the scene's aerodynamics, roll to rest or
+/// the time cap), bit for bit against the host.
+fn ground_bit_identity<T: Precision>(
+    host: impl Fn(&carry_firmware::golden::GroundHost) -> &Host<10>,
+) {
+    let mut differ = 0u32;
+    for (case, h) in GROUND_CASES.iter().zip(GROUND) {
+        defmt::assert_eq!(case.name, h.name);
+        let target = case.outputs::<T>();
+        if !identical(case.name, "default", &GROUND_NAMES, &target, host(h)) {
+            differ += 1;
+        }
+    }
+    defmt::info!(
+        "ground {=str}: {=usize} shots, {=u32} differ from the host",
+        T::NAME,
+        GROUND_CASES.len(),
         differ
     );
     defmt::assert_eq!(differ, 0);
@@ -250,6 +295,23 @@ mod tests {
     #[test]
     fn flight_f64_bit_identical_to_host() {
         flight_bit_identity::<f64>(|c| &c.host_f64);
+    }
+
+    /// The calibrated default model (`tour2023`), every golden launch and scene.
+    #[test]
+    fn flight_calibrated_model_bit_identical_to_host() {
+        calibrated_bit_identity::<f32>(|c| &c.tour2023_f32);
+        calibrated_bit_identity::<f64>(|c| &c.tour2023_f64);
+    }
+
+    #[test]
+    fn ground_f32_bit_identical_to_host() {
+        ground_bit_identity::<f32>(|c| &c.host_f32);
+    }
+
+    #[test]
+    fn ground_f64_bit_identical_to_host() {
+        ground_bit_identity::<f64>(|c| &c.host_f64);
     }
 
     /// The host suite's tolerances: 1e-9 relative in f64, 4e-6 in f32.

@@ -68,6 +68,7 @@ fn run<T: Real>(b: &mut Bytes<'_>) -> Result<()> {
         time_limit_s: lit(time_limit),
         gravity_mps2: lit(b.param(0.0, 20.0)),
         launch_position_m: v(b.vec3(-5.0, 5.0)),
+        ground: None,
     };
     let min_step = time_limit / MAX_STEPS;
     let integrator = match b.byte() % 3 {

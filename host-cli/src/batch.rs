@@ -63,6 +63,26 @@ pub fn applies(mode: Mode, key: Key) -> bool {
 }
 
 /// The meaning of each input column.
+/// Whether the output has the ground's columns: the command line or the scene file names a
+/// ground, or the input has a ground column.
+fn ground_columns(job: &Job, cols: &Columns) -> bool {
+    !job.base.scene.ground.is_empty()
+        || cols.keys.iter().any(|(_, k)| {
+            matches!(
+                k,
+                Key::Ground
+                    | Key::Stimp
+                    | Key::GroundSlope
+                    | Key::GroundSlopeDirection
+                    | Key::GroundRestitution
+                    | Key::GroundFriction
+                    | Key::RollingResistance
+                    | Key::CraterScale
+            )
+        })
+}
+
+/// The meaning of each input column.
 #[derive(Debug, Clone)]
 pub struct Columns {
     keys: Vec<(usize, Key)>,
@@ -214,11 +234,11 @@ fn process(
         }
         match result {
             Ok(r) => {
-                report::write_csv_fields(out, floats, job.mode, &r);
+                report::write_csv_fields(out, floats, job.mode, ground_columns(job, cols), &r);
                 out.extend_from_slice(b",\n");
             }
             Err(e) => {
-                report::write_csv_empty(out, job.mode);
+                report::write_csv_empty(out, job.mode, ground_columns(job, cols));
                 out.push(b',');
                 put_csv_text(out, format!("line {line}: {}", e.as_column()).as_bytes());
                 out.push(b'\n');
@@ -228,7 +248,7 @@ fn process(
     failed
 }
 
-fn open(input: &PathBuf) -> Result<(Box<dyn Read>, Option<u64>), InputError> {
+pub(crate) fn open(input: &PathBuf) -> Result<(Box<dyn Read>, Option<u64>), InputError> {
     if input.as_os_str() == "-" {
         return Ok((Box::new(std::io::stdin().lock()), None));
     }
@@ -353,7 +373,13 @@ fn stream<R: Read, W: Write>(
         } else {
             &["line"]
         };
-        report::write_csv_header(&mut header, prefix, job.mode, &["error"]);
+        report::write_csv_header(
+            &mut header,
+            prefix,
+            job.mode,
+            ground_columns(job, cols),
+            &["error"],
+        );
         out.write_all(&header)?;
     }
     let mut records: Vec<ByteRecord> = vec![ByteRecord::new(); CHUNK];
@@ -411,7 +437,7 @@ fn stream<R: Read, W: Write>(
                 if cols.label.is_some() {
                     buf.push(b',');
                 }
-                report::write_csv_empty(&mut buf, job.mode);
+                report::write_csv_empty(&mut buf, job.mode, ground_columns(job, cols));
                 buf.push(b',');
                 put_csv_text(&mut buf, msg.as_bytes());
                 buf.push(b'\n');

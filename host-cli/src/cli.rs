@@ -61,6 +61,10 @@ pub enum Command {
     /// Benchmarks and studies.
     #[command(subcommand)]
     Bench(BenchCmd),
+    /// Fit a model family's coefficients to measured shots (CSV), with per-row residuals and
+    /// leave-one-out errors; `--output` writes the model for `--aero FILE.toml`.
+    #[command(after_help = crate::fit::AFTER_HELP)]
+    Fit(crate::fit::FitCmd),
 }
 
 fn finite(s: &str) -> Result<f64, String> {
@@ -265,6 +269,34 @@ pub struct SceneArgs {
     /// written by `carry fit --output`.
     #[arg(long, value_name = "NAME|FILE.toml")]
     pub aero: Option<String>,
+    /// Bounce and roll to rest on this ground: fairway, fairway-soft, rough, green, or a
+    /// ground file FILE.toml (keys surface, stimp, restitution, friction,
+    /// rolling_resistance, crater_scale, slope, slope_direction). Adds total, roll,
+    /// bounces, rest position and time to rest.
+    #[arg(long, value_name = "SURFACE")]
+    pub ground: Option<String>,
+    /// Green speed, stimpmeter reading [ft] (--ground green; default 10).
+    #[arg(long, value_name = "FT", value_parser = finite, allow_hyphen_values = true)]
+    pub stimp: Option<f64>,
+    /// Slope of the ground plane through the landing point [deg] (default 0).
+    #[arg(long, value_name = "DEG", value_parser = finite, allow_hyphen_values = true)]
+    pub ground_slope: Option<f64>,
+    /// Direction the ground rises towards [deg from downrange towards the right]:
+    /// 0 uphill to the target, 180 downhill, 90 rising to the right.
+    #[arg(long, value_name = "DEG", value_parser = finite, allow_hyphen_values = true)]
+    pub ground_slope_direction: Option<f64>,
+    /// Custom turf: restitution at low normal speed [0..1] (Penner's green: 0.51).
+    #[arg(long, value_name = "E", value_parser = finite, allow_hyphen_values = true)]
+    pub ground_restitution: Option<f64>,
+    /// Custom turf: ball–turf friction coefficient during a bounce (Penner: 0.40).
+    #[arg(long, value_name = "MU", value_parser = finite, allow_hyphen_values = true)]
+    pub ground_friction: Option<f64>,
+    /// Custom turf: rolling resistance ρ, the roll decelerates at (5/7)ρg.
+    #[arg(long, value_name = "RHO", value_parser = finite, allow_hyphen_values = true)]
+    pub rolling_resistance: Option<f64>,
+    /// Custom turf: scale of Penner's crater tilt (1 = Penner's green).
+    #[arg(long, value_name = "K", value_parser = finite, allow_hyphen_values = true)]
+    pub crater_scale: Option<f64>,
 }
 
 /// Precision option.
@@ -583,6 +615,16 @@ impl SceneArgs {
             let model = Key::Aero.parse(aero)?;
             Key::Aero.set(p, u, model);
         }
+        if let Some(text) = &self.ground {
+            Key::Ground.set(p, u, Key::Ground.parse(text)?);
+        }
+        put(p, u, Key::Stimp, self.stimp);
+        put(p, u, Key::GroundSlope, self.ground_slope);
+        put(p, u, Key::GroundSlopeDirection, self.ground_slope_direction);
+        put(p, u, Key::GroundRestitution, self.ground_restitution);
+        put(p, u, Key::GroundFriction, self.ground_friction);
+        put(p, u, Key::RollingResistance, self.rolling_resistance);
+        put(p, u, Key::CraterScale, self.crater_scale);
         for (flag, key) in [
             (self.no_drag, Key::NoDrag),
             (self.no_lift, Key::NoLift),

@@ -3,7 +3,7 @@
 
 use crate::error::InputError;
 use crate::params::{ClubParams, DEFAULT_BACKSPIN_RPM, Params};
-use crate::report::{ClubAfter, FlightReport, LaunchReport, Report};
+use crate::report::{ClubAfter, FlightReport, GroundReport, LaunchReport, Report};
 use carry_core::flight::{Integrator, Recorder, Sample};
 use carry_core::impact::{self, Solver};
 use carry_core::presets::roll_tilt_rad;
@@ -11,7 +11,7 @@ use carry_core::real::{lit, to_f64};
 use carry_core::units::{deg, rpm, to_deg, to_rpm};
 use carry_core::{
     Ball, BallMotion, ClubHead, ClubSpec, Delivery, FaceLocation, FlightOutcome, Launch,
-    LaunchMetrics, Real,
+    LaunchMetrics, Real, RunEnd,
 };
 use clap::ValueEnum;
 use nalgebra::{Matrix3, Vector3};
@@ -347,6 +347,14 @@ fn flight_report<T: Real>(f: &FlightOutcome<T>) -> FlightReport {
         air_density_kgm3: to_f64(f.air_density_kgm3),
         steps: f.stats.steps,
         rejected_steps: f.stats.rejected_steps,
+        ground: f.ground.map(|g| GroundReport {
+            total_m: to_f64(g.total_m),
+            roll_m: to_f64(g.roll_m),
+            bounces: g.bounces,
+            rest_position_m: f3(&g.rest_position_m),
+            time_to_rest_s: to_f64(g.time_to_rest_s),
+            still_rolling: g.end == RunEnd::StillRolling,
+        }),
     }
 }
 

@@ -101,6 +101,12 @@ pub fn field_key(field: Field) -> &'static str {
         Field::Step => "step",
         Field::Tolerance => "tolerance",
         Field::RecordInterval => "interval",
+        Field::GroundRestitution => "ground_restitution",
+        Field::GroundFriction => "ground_friction",
+        Field::RollingResistance => "rolling_resistance",
+        Field::CraterScale => "crater_scale",
+        Field::Stimp => "stimp",
+        Field::GroundNormal => "ground_slope",
         Field::ContactLaw => "contact, solver",
         Field::Friction
         | Field::TangentialRestitution
@@ -120,7 +126,12 @@ impl From<Error> for InputError {
                     Field::Humidity => format!("{reason} (0 to 100 percent)"),
                     Field::Temperature => format!("{reason} (−100 to 100 °C)"),
                     Field::Altitude => format!("{reason} (−5000 to 11000 m)"),
-                    Field::Restitution => format!("{reason} (0 to 1)"),
+                    Field::Restitution | Field::GroundRestitution => format!("{reason} (0 to 1)"),
+                    Field::Stimp => format!("{reason} (1 to 30 ft)"),
+                    Field::GroundNormal => format!("{reason} (0 to 45 degrees)"),
+                    Field::GroundFriction | Field::RollingResistance | Field::CraterScale => {
+                        format!("{reason} (0 to 10)")
+                    }
                     Field::ContactLaw => {
                         "the full 15×15 solver supports only --contact rolling".to_owned()
                     }

@@ -12,6 +12,8 @@ pub mod clubs;
 pub mod compute;
 pub mod contact;
 pub mod error;
+pub mod fit;
+pub mod ground;
 pub mod params;
 pub mod plot;
 pub mod report;
@@ -123,7 +125,7 @@ fn usage_line(e: &clap::Error) -> String {
     line.strip_prefix("error: ").unwrap_or(line).to_owned()
 }
 
-fn write_stdout(bytes: &[u8]) -> Result<(), Failure> {
+pub(crate) fn write_stdout(bytes: &[u8]) -> Result<(), Failure> {
     let mut out = std::io::stdout().lock();
     out.write_all(bytes)?;
     out.flush()?;
@@ -199,6 +201,7 @@ fn dispatch(cli: Cli) -> Result<(), Failure> {
             };
             plot::run(mode, &p, &n, units, plot)
         }
+        Command::Fit(c) => fit::run(&c),
         Command::Clubs(c) => write_stdout(
             if c.json {
                 clubs::json()

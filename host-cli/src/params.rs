@@ -5,6 +5,7 @@
 //! A key's name is the option's long name in snake_case (`--club-speed` ↔ `club_speed`).
 
 use crate::error::InputError;
+use crate::ground::GroundSpec;
 use crate::units::{Quantity, Units};
 use carry_core::aero::AeroModel;
 use carry_core::impact::ContactLaw;
@@ -117,6 +118,8 @@ pub struct SceneParams {
     pub no_spin_decay: bool,
     /// The aerodynamic model (`None`: the calibrated default).
     pub aero: Option<AeroModel<f64>>,
+    /// The ground after the landing (empty: none).
+    pub ground: GroundSpec,
 }
 
 /// Everything one shot needs (numerics are global, see [`crate::compute::Numerics`]).
@@ -209,6 +212,8 @@ pub enum Kind {
     Aero,
     /// `true`/`false`/`1`/`0`/`yes`/`no`.
     Bool,
+    /// A surface name or a ground file ([`crate::ground`]).
+    Ground,
 }
 
 macro_rules! keys {
@@ -301,6 +306,14 @@ keys! {
     NoLift = "no_lift", Bool, Plain;
     NoSpinDecay = "no_spin_decay", Bool, Plain;
     Aero = "aero", Aero, Plain;
+    Ground = "ground", Ground, Plain;
+    Stimp = "stimp", Number, Plain;
+    GroundSlope = "ground_slope", Number, Plain;
+    GroundSlopeDirection = "ground_slope_direction", Number, Plain;
+    GroundRestitution = "ground_restitution", Number, Plain;
+    GroundFriction = "ground_friction", Number, Plain;
+    RollingResistance = "rolling_resistance", Number, Plain;
+    CraterScale = "crater_scale", Number, Plain;
 }
 
 /// A parsed value.
@@ -320,6 +333,8 @@ pub enum Value {
     Aero(AeroModel<f64>),
     /// A switch.
     Bool(bool),
+    /// A ground (surface and options).
+    Ground(GroundSpec),
 }
 
 impl Key {
@@ -353,6 +368,7 @@ impl Key {
                 .map(Value::Aero)
                 .map_err(err),
             Kind::Bool => parse_bool(text).map(Value::Bool).map_err(err),
+            Kind::Ground => crate::ground::parse(text).map(Value::Ground).map_err(err),
         }
     }
 
@@ -414,6 +430,13 @@ impl Key {
                     Key::WindExponent => s.wind_exponent = Some(x),
                     Key::LandingHeight => s.landing_height_m = Some(x),
                     Key::TimeLimit => s.time_limit_s = Some(x),
+                    Key::Stimp => s.ground.stimp_ft = Some(x),
+                    Key::GroundSlope => s.ground.slope_deg = Some(x),
+                    Key::GroundSlopeDirection => s.ground.slope_direction_deg = Some(x),
+                    Key::GroundRestitution => s.ground.restitution = Some(x),
+                    Key::GroundFriction => s.ground.friction = Some(x),
+                    Key::RollingResistance => s.ground.rolling_resistance = Some(x),
+                    Key::CraterScale => s.ground.crater_scale = Some(x),
                     _ => {}
                 }
             }
@@ -439,6 +462,7 @@ impl Key {
                 Key::NoSpinDecay => s.no_spin_decay = b,
                 _ => {}
             },
+            Value::Ground(g) => s.ground.merge(&g),
         }
     }
 }

@@ -120,10 +120,19 @@ pub fn run(
             let (side, _) = units.display(Quantity::Long, f.side_m);
             let side = if side.abs() < 0.05 { 0.0 } else { side };
             let (apex, high) = units.display(Quantity::Height, f.apex_m);
-            let _ = writeln!(
+            let _ = write!(
                 summary,
                 "{label:<28} carry {carry:>6.1} {long}  side {side:>+6.1} {long}  apex {apex:>5.1} {high}"
             );
+            if let Some(g) = &f.ground {
+                let (total, _) = units.display(Quantity::Long, g.total_m);
+                let (roll, _) = units.display(Quantity::Long, g.roll_m);
+                let _ = write!(
+                    summary,
+                    "  total {total:>6.1} {long}  roll {roll:>+5.1} {long}"
+                );
+            }
+            summary.push('\n');
         }
         let points = trace
             .iter()

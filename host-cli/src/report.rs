@@ -74,6 +74,27 @@ pub struct FlightReport {
     pub steps: u32,
     /// Rejected integrator steps.
     pub rejected_steps: u32,
+    /// Bounce and roll, only with a ground (flattened into `flight`).
+    #[serde(flatten, skip_serializing_if = "Option::is_none")]
+    pub ground: Option<GroundReport>,
+}
+
+/// Bounce and roll to rest (keys of the JSON object `flight`, only with a ground).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct GroundReport {
+    /// Total: tee to rest, horizontal (m).
+    pub total_m: f64,
+    /// Roll: first landing to rest along the ground (m; negative: spun back).
+    pub roll_m: f64,
+    /// Bounces (hops).
+    pub bounces: u32,
+    /// Rest position (m, G).
+    pub rest_position_m: [f64; 3],
+    /// Launch to rest (s).
+    pub time_to_rest_s: f64,
+    /// The ball was still rolling at the roll time cap (a slope steeper than the
+    /// surface's rolling resistance): "rest" is where it was then.
+    pub still_rolling: bool,
 }
 
 /// One result: impact, flight or both.
@@ -145,9 +166,21 @@ const FLIGHT_COLUMNS: &[&str] = &[
     "rejected_steps",
 ];
 
-/// The CSV result columns of `mode`, in order (JSON key names, flattened).
+const GROUND_COLUMNS: &[&str] = &[
+    "total_m",
+    "roll_m",
+    "bounces",
+    "rest_position_m_x",
+    "rest_position_m_y",
+    "rest_position_m_z",
+    "time_to_rest_s",
+    "still_rolling",
+];
+
+/// The CSV result columns of `mode`, in order (JSON key names, flattened), with the
+/// ground's when `ground`.
 #[must_use]
-pub fn csv_columns(mode: Mode) -> Vec<&'static str> {
+pub fn csv_columns(mode: Mode, ground: bool) -> Vec<&'static str> {
     let mut c = Vec::new();
     c.extend_from_slice(LAUNCH_COLUMNS);
     if mode != Mode::Flight {
@@ -159,13 +192,22 @@ pub fn csv_columns(mode: Mode) -> Vec<&'static str> {
     }
     if mode != Mode::Impact {
         c.extend_from_slice(FLIGHT_COLUMNS);
+        if ground {
+            c.extend_from_slice(GROUND_COLUMNS);
+        }
     }
     c
 }
 
 /// Writes a comma-separated header line.
-pub fn write_csv_header(out: &mut Vec<u8>, prefix: &[&str], mode: Mode, suffix: &[&str]) {
-    let middle = csv_columns(mode);
+pub fn write_csv_header(
+    out: &mut Vec<u8>,
+    prefix: &[&str],
+    mode: Mode,
+    ground: bool,
+    suffix: &[&str],
+) {
+    let middle = csv_columns(mode, ground);
     let cols = prefix.iter().chain(middle.iter()).chain(suffix.iter());
     for (i, c) in cols.enumerate() {
         if i > 0 {
@@ -240,7 +282,7 @@ fn itoa_u32(mut n: u32) -> Digits {
 }
 
 /// Appends the result fields of `r` (each preceded by a comma) in [`csv_columns`] order.
-pub fn write_csv_fields(out: &mut Vec<u8>, f: &mut Floats, mode: Mode, r: &Report) {
+pub fn write_csv_fields(out: &mut Vec<u8>, f: &mut Floats, mode: Mode, ground: bool, r: &Report) {
     let l = &r.launch;
     for x in [
         l.ball_speed_mps,
@@ -294,11 +336,24 @@ pub fn write_csv_fields(out: &mut Vec<u8>, f: &mut Floats, mode: Mode, r: &Repor
                 out.push(b',');
             }
         }
+        if ground {
+            match r.flight.and_then(|g| g.ground) {
+                Some(g) => {
+                    f.field(out, g.total_m);
+                    f.field(out, g.roll_m);
+                    Floats::count(out, g.bounces);
+                    f.vector(out, &g.rest_position_m);
+                    f.field(out, g.time_to_rest_s);
+                    out.extend_from_slice(if g.still_rolling { b",true" } else { b",false" });
+                }
+                None => out.resize(out.len() + GROUND_COLUMNS.len(), b','),
+            }
+        }
     }
 }
 
 /// Appends empty result fields (an error row).
-pub fn write_csv_empty(out: &mut Vec<u8>, mode: Mode) {
+pub fn write_csv_empty(out: &mut Vec<u8>, mode: Mode, ground: bool) {
     let n = LAUNCH_COLUMNS.len()
         + LAUNCH_VECTOR_COLUMNS.len()
         + if mode == Mode::Flight {
@@ -309,7 +364,7 @@ pub fn write_csv_empty(out: &mut Vec<u8>, mode: Mode) {
         + if mode == Mode::Impact {
             0
         } else {
-            FLIGHT_COLUMNS.len()
+            FLIGHT_COLUMNS.len() + if ground { GROUND_COLUMNS.len() } else { 0 }
         };
     out.resize(out.len() + n, b',');
 }
@@ -317,11 +372,12 @@ pub fn write_csv_empty(out: &mut Vec<u8>, mode: Mode) {
 /// One CSV header plus one row (the `--csv` output of a single command).
 #[must_use]
 pub fn single_csv(mode: Mode, r: &Report) -> Vec<u8> {
+    let ground = r.flight.is_some_and(|g| g.ground.is_some());
     let mut out = Vec::new();
-    write_csv_header(&mut out, &[], mode, &[]);
+    write_csv_header(&mut out, &[], mode, ground, &[]);
     let mut f = Floats::default();
     let start = out.len();
-    write_csv_fields(&mut out, &mut f, mode, r);
+    write_csv_fields(&mut out, &mut f, mode, ground, r);
     // Drop the leading comma of the first field.
     out.remove(start);
     out.push(b'\n');
@@ -446,6 +502,23 @@ pub fn table(mode: Mode, r: &Report, units: Units, ctx: &TableContext<'_>) -> St
         let (v, u) = speed(g.land_speed_mps);
         row(&mut out, "landing speed", v, 1, u);
         row(&mut out, "landing spin", g.land_spin_rpm, 0, "rpm");
+        if let Some(r) = &g.ground {
+            out.push('\n');
+            let _ = writeln!(out, "GROUND");
+            let (t, u) = units.display(Quantity::Long, r.total_m);
+            row(&mut out, "total", t, 1, u);
+            let (l, u) = units.display(Quantity::Long, r.roll_m);
+            signed_row(&mut out, "roll", l, 1, u, "back", "");
+            row(&mut out, "bounces", f64::from(r.bounces), 0, "");
+            let (z, u) = units.display(Quantity::Long, r.rest_position_m[2]);
+            signed_row(&mut out, "rest side", z, 1, u, "left", "right");
+            let label = if r.still_rolling {
+                "rolling at"
+            } else {
+                "time to rest"
+            };
+            row(&mut out, label, r.time_to_rest_s, 2, "s");
+        }
     }
     if let (Some(c), Mode::Impact) = (&r.club_after, mode) {
         out.push('\n');

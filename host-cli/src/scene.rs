@@ -45,6 +45,14 @@ pub const SCENE_KEYS: &[Key] = &[
     Key::NoLift,
     Key::NoSpinDecay,
     Key::Aero,
+    Key::Ground,
+    Key::Stimp,
+    Key::GroundSlope,
+    Key::GroundSlopeDirection,
+    Key::GroundRestitution,
+    Key::GroundFriction,
+    Key::RollingResistance,
+    Key::CraterScale,
 ];
 
 fn v3<T: Real>(v: [f64; 3]) -> Vector3<T> {
@@ -144,6 +152,7 @@ pub fn build<T: Real>(s: &SceneParams) -> Result<Scene<T>, InputError> {
     if let Some(t) = s.time_limit_s {
         scene.time_limit_s = lit(t);
     }
+    scene.ground = crate::ground::build(&s.ground)?;
     Ok(scene)
 }
 
@@ -211,6 +220,13 @@ pub fn load_file(path: &Path, units: Units, params: &mut Params) -> Result<(), I
                 Value::Vector([number(&a[0])?, number(&a[1])?, number(&a[2])?])
             }
             (Kind::Vector, _) => return Err(bad("must be an array of three numbers [x, y, z]")),
+            (Kind::Ground, toml::Value::String(t)) => {
+                Value::Ground(crate::ground::parse(t).map_err(|e| bad(&e))?)
+            }
+            (Kind::Ground, toml::Value::Table(t)) => {
+                Value::Ground(crate::ground::from_table(t).map_err(|e| bad(&e))?)
+            }
+            (Kind::Ground, _) => return Err(bad("must be a surface name or a table")),
             (_, v) => Value::Number(number(v)?),
         };
         key.set(params, units, parsed);

@@ -2,15 +2,17 @@
 //!
 //! Every input comes through [`black_box`], so the optimiser knows nothing about it: a
 //! panic path in the core survives unless the code itself rules it out. The results go
-//! back into `black_box` so nothing is dead code. Both precisions are linked.
+//! back into `black_box` so nothing is dead code. Both precisions are linked. The flight
+//! paths include the ground after the landing (bounces, hops, roll; issue 12).
 #![no_std]
 #![no_main]
 
+use carry_core::aero::AeroModel;
 use carry_core::air::{Air, Pressure, Weather};
 use carry_core::flight::{Integrator, Recorder, Sample, fly};
+use carry_core::ground::{Ground, Surface, Turf};
 use carry_core::impact::{self, CompliantContact, ContactLaw, Solver};
 use carry_core::linalg::Pivoting;
-use carry_core::aero::AeroModel;
 use carry_core::scene::{Effects, Scene};
 use carry_core::wind::Wind;
 use carry_core::{
@@ -187,6 +189,7 @@ fn flight_paths<T: Real>() -> T {
         time_limit_s: x(60.0),
         gravity_mps2: x(9.80665),
         launch_position_m: v3(0.0, 0.0, 0.0),
+        ground: ground(),
     };
     let integrators = [
         Integrator::default(),
@@ -217,6 +220,44 @@ fn flight_paths<T: Real>() -> T {
     acc
 }
 
+/// The ground after the landing (issue 12): none, each surface, a custom turf, level or
+/// sloped; and one bounce through the public entry point.
+fn ground<T: Real>() -> Option<Ground<T>> {
+    let surface = match black_box(0_u8) {
+        0 => Surface::FairwayFirm,
+        1 => Surface::FairwaySoft,
+        2 => Surface::Rough,
+        3 => Surface::Green { stimp_m: x(3.0) },
+        _ => Surface::Custom(Turf {
+            restitution: x(0.5),
+            friction: x(0.4),
+            rolling_resistance: x(0.1),
+            crater_scale: x(1.0),
+        }),
+    };
+    match black_box(1_u8) {
+        0 => None,
+        1 => Some(Ground::level(surface)),
+        _ => Some(Ground {
+            surface,
+            normal: v3(0.05, 1.0, -0.02),
+        }),
+    }
+}
+
+fn bounce_paths<T: Real>() -> T {
+    let Some(g) = ground::<T>() else {
+        return T::zero();
+    };
+    match g.prepare(x(0.021_336)) {
+        Ok(p) => match p.bounce(&v3(20.0, -15.0, 1.0), &v3(10.0, 5.0, 600.0)) {
+            Ok(r) => r.velocity_mps.x + r.spin_radps.z,
+            Err(_) => T::one(),
+        },
+        Err(_) => T::zero(),
+    }
+}
+
 #[cortex_m_rt::entry]
 fn main() -> ! {
     // The negative control (`--features canary`): an index the optimiser cannot check, so
@@ -228,6 +269,8 @@ fn main() -> ! {
         black_box(impact_paths::<f64>());
         black_box(flight_paths::<f32>());
         black_box(flight_paths::<f64>());
+        black_box(bounce_paths::<f32>());
+        black_box(bounce_paths::<f64>());
     }
 }
 

@@ -89,11 +89,14 @@ impl<T: Real> Dynamics<'_, T> {
         if drag || lift || decay {
             let vr = if wind { v - p.wind.at(y[Y]) } else { v };
             let speed = vr.norm_squared().sqrt();
-            if drag {
-                a -= vr * p.aero.forces.drag(speed, s);
-            }
-            if lift {
-                a += self.axis.cross(&vr) * p.aero.forces.lift(speed, s);
+            if drag || lift {
+                let (kd, kl) = p.aero.forces.factors(speed, s, drag, lift);
+                if drag {
+                    a -= vr * kd;
+                }
+                if lift {
+                    a += self.axis.cross(&vr) * kl;
+                }
             }
             if decay {
                 ds = -p.aero.decay * speed * s;

@@ -196,42 +196,53 @@ pub(crate) enum Forces<T> {
 }
 
 impl<T: Real> Forces<T> {
-    /// `A·C_D·V` (1/s): the drag acceleration is `−(A·C_D·V)·v_r`.
+    /// `(A·C_D·V, A·C_L·V)` (1/s), each only when asked for (`0` otherwise): the drag
+    /// acceleration is `−(A·C_D·V)·v_r`, the lift acceleration `(A·C_L·V)·(ω̂ × v_r)`. One
+    /// dispatch on the family per evaluation.
     #[inline(always)]
-    pub(crate) fn drag(&self, speed: T, spin: T) -> T {
+    pub(crate) fn factors(&self, speed: T, spin: T, drag: bool, lift: bool) -> (T, T) {
+        let zero = T::zero();
         match *self {
-            Self::Linear { drag_v, drag_s, .. } => drag_v * speed + drag_s * spin,
+            Self::Linear {
+                drag_v,
+                drag_s,
+                lift_v,
+                lift_s,
+            } => (
+                if drag {
+                    drag_v * speed + drag_s * spin
+                } else {
+                    zero
+                },
+                if lift {
+                    lift_v * speed + lift_s * spin
+                } else {
+                    zero
+                },
+            ),
             Self::Modern {
                 drag_v,
                 drag_crisis,
                 crisis_per_speed,
                 drag_s,
-                ..
-            } => {
-                let crisis = ModernAero::crisis(speed * crisis_per_speed);
-                (drag_v + drag_crisis * crisis) * speed + drag_s * spin
-            }
-        }
-    }
-
-    /// `A·C_L·V` (1/s): the lift acceleration is `(A·C_L·V)·(ω̂ × v_r)`.
-    #[inline(always)]
-    pub(crate) fn lift(&self, speed: T, spin: T) -> T {
-        match *self {
-            Self::Linear { lift_v, lift_s, .. } => lift_v * speed + lift_s * spin,
-            Self::Modern {
                 lift_max,
                 radius,
                 lift_half,
-                ..
             } => {
+                let kd = if drag {
+                    let crisis = ModernAero::crisis(speed * crisis_per_speed);
+                    (drag_v + drag_crisis * crisis) * speed + drag_s * spin
+                } else {
+                    zero
+                };
                 // C_L·V = c_l,max·S·V/(S + S_½) with S = R·s/V, multiplied through by V.
                 let denominator = radius * spin + lift_half * speed;
-                if denominator > T::zero() {
+                let kl = if lift && denominator > zero {
                     lift_max * spin * speed / denominator
                 } else {
-                    T::zero()
-                }
+                    zero
+                };
+                (kd, kl)
             }
         }
     }

@@ -18,7 +18,7 @@
 use super::{Recorder, Sample};
 use crate::aero::{S, State, VY, Y};
 use crate::error::{Error, Result};
-use crate::real::{Real, lit};
+use crate::real::{Real, lit, to_f64};
 use nalgebra::Vector3;
 
 /// Dense-output weights dᵢ of DOPRI5 (Hairer's `CONTD5`), for k₁, k₃, k₄, k₅, k₆, k₇.
@@ -84,6 +84,21 @@ impl<T: Real> Step<'_, T> {
             }
         };
         Poly([y0, r2, r3, r4, r5])
+    }
+
+    /// The interpolant of `n · (components base..base+3) − c` (a projection of the
+    /// position, `base = 0`, or of the velocity, `base = 3`): the interpolant is linear
+    /// in the states, so it is the same combination of the component coefficients.
+    fn poly_along(&self, n: &Vector3<T>, base: usize, c: T) -> Poly<T> {
+        let mut r = [T::zero(); 5];
+        for (k, nk) in n.iter().enumerate() {
+            let p = self.poly_of(base + k);
+            for (ri, pi) in r.iter_mut().zip(p.0.iter()) {
+                *ri += *nk * *pi;
+            }
+        }
+        r[0] -= c;
+        Poly(r)
     }
 
     /// The whole interpolated state at `θ ∈ [0, 1]`.
@@ -159,9 +174,23 @@ pub(crate) struct Landing<T> {
     pub(crate) state: State<T>,
 }
 
+/// A ground plane `n·p = c` (unit normal `n` pointing up out of the ground): a hop after
+/// a bounce ends when the ball comes down through it.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Plane<T> {
+    pub(crate) normal: Vector3<T>,
+    pub(crate) offset: T,
+}
+
 /// Tracks the apex, the landing and the recording across accepted steps.
 pub(crate) struct Tracker<'r, 'b, T: Real> {
     landing_height: T,
+    /// A hop: the landing is on this plane instead of the level `landing_height`, and
+    /// there is no apex bookkeeping.
+    plane: Option<Plane<T>>,
+    /// Time of the integration's start since launch (s): 0 for the flight, the bounce
+    /// time for a hop (recorded samples keep the launch's clock).
+    time_offset: T,
     /// Apex (time, height) so far.
     pub(crate) apex_time: T,
     pub(crate) apex_height: T,
@@ -179,11 +208,46 @@ impl<'r, 'b, T: Real> Tracker<'r, 'b, T> {
     ) -> Self {
         Self {
             landing_height,
+            plane: None,
+            time_offset: T::zero(),
             apex_time: T::zero(),
             apex_height: y0[Y],
             axis,
             recorder,
             next_sample: 0,
+        }
+    }
+
+    /// A tracker for a hop starting on `plane` at `time_offset` after launch: it finds where
+    /// the ball comes back down through the plane, and records on the launch's clock.
+    pub(crate) fn hop(
+        plane: Plane<T>,
+        y0: &State<T>,
+        axis: Vector3<T>,
+        time_offset: T,
+        recorder: Option<&'r mut Recorder<'b, T>>,
+    ) -> Self {
+        // The first sample time k·Δ at or after the offset (saturating, never panics).
+        let next_sample = recorder.as_deref().map_or(0, |r| {
+            let k = to_f64(time_offset / r.interval_s);
+            let k = if k.is_finite() && k > 0.0 { k } else { 0.0 };
+            // Float-to-int `as` saturates; ceil without std: the truncation, plus one when short.
+            let n = k as u32;
+            if f64::from(n) < k {
+                n.saturating_add(1)
+            } else {
+                n
+            }
+        });
+        Self {
+            landing_height: y0[Y],
+            plane: Some(plane),
+            time_offset,
+            apex_time: T::zero(),
+            apex_height: y0[Y],
+            axis,
+            recorder,
+            next_sample,
         }
     }
 
@@ -195,6 +259,16 @@ impl<'r, 'b, T: Real> Tracker<'r, 'b, T> {
     /// [`Error::NoLanding`] when the ball peaks at or below the landing height.
     pub(crate) fn on_step(&mut self, t0: T, step: &Step<'_, T>) -> Result<Option<Landing<T>>> {
         let h = step.h;
+        if let Some(plane) = self.plane {
+            let landing = locate_on_plane(step, &plane);
+            if self.recorder.is_some() {
+                self.record(t0, step, landing);
+            }
+            return Ok(landing.map(|th| Landing {
+                time: t0 + th * h,
+                state: step.state_at(th),
+            }));
+        }
         let (apex, landing) = self.locate(step);
         if let Some((th, ya)) = apex {
             if ya > self.apex_height {
@@ -216,7 +290,10 @@ impl<'r, 'b, T: Real> Tracker<'r, 'b, T> {
 
     /// Where in the step the landing is (θ), if it is in this step; no side effects.
     pub(crate) fn landing_in(&self, step: &Step<'_, T>) -> Option<T> {
-        self.locate(step).1
+        match self.plane {
+            Some(plane) => locate_on_plane(step, &plane),
+            None => self.locate(step).1,
+        }
     }
 
     /// The apex `(θ, height)` if `v_y` turns negative in the step, and the landing θ if the
@@ -252,9 +329,10 @@ impl<'r, 'b, T: Real> Tracker<'r, 'b, T> {
         };
         let h = step.h;
         let end = landing.unwrap_or_else(T::one);
+        let offset = self.time_offset;
         while !rec.full {
             let ts = lit::<T>(f64::from(self.next_sample)) * rec.interval_s;
-            let th = (ts - t0) / h;
+            let th = (ts - offset - t0) / h;
             if th > end || (landing.is_some() && th >= end) {
                 break;
             }
@@ -263,9 +341,46 @@ impl<'r, 'b, T: Real> Tracker<'r, 'b, T> {
             self.next_sample = self.next_sample.saturating_add(1);
         }
         if let Some(th) = landing {
-            rec.push(Sample::new(t0 + th * h, &step.state_at(th), &self.axis));
+            rec.push(Sample::new(
+                t0 + th * h + offset,
+                &step.state_at(th),
+                &self.axis,
+            ));
         }
     }
+}
+
+/// Where in the step the ball comes down through `plane` (θ), if it does: the plane
+/// analogue of [`Tracker::locate`], with the height `g(θ) = n·p(θ) − c` a linear
+/// combination of the component interpolants.
+fn locate_on_plane<T: Real>(step: &Step<'_, T>, plane: &Plane<T>) -> Option<T> {
+    let n = plane.normal;
+    let level = n.x == T::zero() && n.z == T::zero() && n.y == T::one();
+    let height = if level {
+        // Level ground: the height interpolant itself.
+        let mut height = step.poly_of(Y);
+        height.0[0] -= plane.offset;
+        height
+    } else {
+        step.poly_along(&n, 0, plane.offset)
+    };
+    let [g0, r2, r3, r4, r5] = height.0;
+    let g1 = height.at(T::one());
+    if !(g1 <= T::zero()) {
+        return None;
+    }
+    if g0 > T::zero() {
+        return Some(find_root(|x| height.at(x), T::zero(), T::one(), g0, g1));
+    }
+    // The hop's first step starts on the plane (g₀ = 0 to rounding): the landing is the
+    // root of the deflated g(θ)/θ = r₂ + (1−θ)(r₃ + θ(r₄ + (1−θ)r₅)), positive at 0
+    // (h·ġ₀ > 0, leaving the plane) and g₁ − g₀ < 0 at 1.
+    let deflated = |th: T| {
+        let th1 = T::one() - th;
+        r2 + th1 * (r3 + th * (r4 + th1 * r5))
+    };
+    let (d0, d1) = (r2 + r3, r2);
+    (d0 > T::zero() && d1 < T::zero()).then(|| find_root(deflated, T::zero(), T::one(), d0, d1))
 }
 
 impl<T: Real> Sample<T> {

@@ -24,11 +24,13 @@
 mod events;
 mod integrate;
 
+pub(crate) use events::Plane;
 pub use integrate::Stats;
 
 use crate::aero::{Dynamics, Rhs, S, State, Y};
 use crate::ball::{Ball, BallMotion};
 use crate::error::{Error, Field, Reason, Result};
+use crate::ground::{Contact, Hopper, Rollout};
 use crate::real::{Real, lit};
 use crate::scene::{PreparedScene, Scene};
 use crate::validate::{positive, positive_or_infinite};
@@ -81,6 +83,12 @@ pub const MAX_ADAPTIVE_STEPS: u32 = 100_000;
 pub const MAX_TOLERANCE: f64 = 1.0;
 /// Default first trial step of the adaptive integrator (s).
 pub const DEFAULT_INITIAL_STEP_S: f64 = 0.1;
+/// First adaptive step of a hop between bounces, in units of `v_n/g_n` (the vacuum hop
+/// lasts 2): a little longer than the hop, so that a short hop takes one step and its
+/// landing is found inside it.
+pub const HOP_STEP_FACTOR: f64 = 2.1;
+/// Cap on the first adaptive step of a hop (s).
+pub const HOP_MAX_FIRST_STEP_S: f64 = 0.6;
 /// Cap on the first adaptive step (s) when the ball starts in a wind profile's singular
 /// ground layer (see [`crate::wind::Wind::Profile`]).
 pub const PROFILE_INITIAL_STEP_S: f64 = 1.0e-5;
@@ -190,7 +198,12 @@ impl<'a, T: Real> Recorder<'a, T> {
         self.full = false;
     }
 
-    fn push(&mut self, sample: Sample<T>) {
+    /// The recording interval (s).
+    pub(crate) fn interval(&self) -> T {
+        self.interval_s
+    }
+
+    pub(crate) fn push(&mut self, sample: Sample<T>) {
         if self.samples.push(sample).is_err() {
             self.full = true;
         }
@@ -232,6 +245,8 @@ pub struct FlightOutcome<T: Real> {
     pub stats: Stats,
     /// The recorder's buffer filled up and samples were dropped.
     pub recording_full: bool,
+    /// Bounce and roll to rest, when the scene has a ground (`None` otherwise).
+    pub ground: Option<Rollout<T>>,
 }
 
 /// Flies `launch` from the scene's tee through `scene` to the landing.
@@ -308,23 +323,16 @@ fn run<'s, T: Real, R: Rhs<T>>(
     let mut tracker =
         events::Tracker::new(scene.landing_height, &y0, axis, recorder.as_deref_mut());
     let mut stats = Stats::default();
-    let limit = scene.time_limit;
-    let landing = match method {
-        Method::Fixed { step, rk4 } => {
-            integrate::fixed(&rhs, y0, step, rk4, limit, &mut tracker, &mut stats)
-        }
-        Method::Adaptive(mut cfg) => {
-            if scene.profile_singular_at(y0[Y]) {
-                // The profile's (y/h_ref)^k has an infinite derivative at the ground, where
-                // the embedded error estimate is unreliable: start with a small step and let
-                // the controller grow it (×5 per step) once the ball is off the ground.
-                cfg.initial_step = cfg.initial_step.min(lit(PROFILE_INITIAL_STEP_S));
-            }
-            // Likewise at the landing: redo the landing step to end there.
-            cfg.refine_landing = scene.profile_singular_at(scene.landing_height);
-            integrate::dormand_prince(&rhs, y0, cfg, limit, &mut tracker, &mut stats)
-        }
-    }?;
+    let landing = integrate_to_event(
+        scene,
+        &rhs,
+        y0,
+        method,
+        scene.time_limit,
+        scene.landing_height,
+        &mut tracker,
+        &mut stats,
+    )?;
     let (apex_m, apex_time_s) = (tracker.apex_height, tracker.apex_time);
     let y = landing.state;
     // The step ends are checked finite, but the landing is interpolated inside the step:
@@ -342,6 +350,26 @@ fn run<'s, T: Real, R: Rhs<T>>(
     let velocity = Vector3::new(y[3], y[4], y[5]);
     let carry_x = position.x - p0.x;
     let side = position.z - p0.z;
+    let ground = match &scene.ground {
+        None => None,
+        Some(g) => {
+            let first = Contact {
+                time: landing.time,
+                position,
+                velocity,
+                spin: axis * y[S],
+            };
+            let hopper = Hops { scene, method };
+            Some(crate::ground::run_out(
+                g,
+                scene.gravity,
+                &p0,
+                &first,
+                &hopper,
+                recorder.as_deref_mut(),
+            )?)
+        }
+    };
     Ok(FlightOutcome {
         carry_m: carry_x.hypot(side),
         carry_x_m: carry_x,
@@ -358,7 +386,126 @@ fn run<'s, T: Real, R: Rhs<T>>(
         air_density_kgm3: scene.density,
         stats,
         recording_full: recorder.is_some_and(|r| r.is_full()),
+        ground,
     })
+}
+
+/// Integrates from `y0` with `method` until the tracker reports its event (the landing
+/// through `event_height`, or a hop's return to its plane).
+#[allow(clippy::too_many_arguments)]
+fn integrate_to_event<T: Real, R: Rhs<T>>(
+    scene: &PreparedScene<T>,
+    rhs: &R,
+    y0: State<T>,
+    method: Method<T>,
+    limit: T,
+    event_height: T,
+    tracker: &mut events::Tracker<'_, '_, T>,
+    stats: &mut Stats,
+) -> Result<events::Landing<T>> {
+    match method {
+        Method::Fixed { step, rk4 } => integrate::fixed(rhs, y0, step, rk4, limit, tracker, stats),
+        Method::Adaptive(mut cfg) => {
+            if scene.profile_singular_at(y0[Y]) {
+                // The profile's (y/h_ref)^k has an infinite derivative at the ground, where
+                // the embedded error estimate is unreliable: start with a small step and let
+                // the controller grow it (×5 per step) once the ball is off the ground.
+                cfg.initial_step = cfg.initial_step.min(lit(PROFILE_INITIAL_STEP_S));
+            }
+            // Likewise at the landing: redo the landing step to end there.
+            cfg.refine_landing = scene.profile_singular_at(event_height);
+            integrate::dormand_prince(rhs, y0, cfg, limit, tracker, stats)
+        }
+    }
+}
+
+/// The hops between bounces: the scene's own dynamics and the flight's integrator.
+struct Hops<'s, T: Real> {
+    scene: &'s PreparedScene<T>,
+    method: Method<T>,
+}
+
+impl<T: Real> Hopper<T> for Hops<'_, T> {
+    fn forces(&self, at: &Contact<T>, stats: &mut Stats) -> (Vector3<T>, T) {
+        let spin = at.spin.norm();
+        let axis = if spin > T::zero() {
+            at.spin / spin
+        } else {
+            Vector3::zeros()
+        };
+        let (p, v) = (at.position, at.velocity);
+        let f = Dynamics {
+            scene: self.scene,
+            axis,
+        }
+        .eval(&[p.x, p.y, p.z, v.x, v.y, v.z, spin]);
+        stats.force_evaluations = stats.force_evaluations.saturating_add(1);
+        (Vector3::new(f[3], f[4], f[5]), f[S])
+    }
+
+    fn hop(
+        &self,
+        from: &Contact<T>,
+        plane: Plane<T>,
+        recorder: Option<&mut Recorder<'_, T>>,
+        stats: &mut Stats,
+    ) -> Result<Contact<T>> {
+        let scene = self.scene;
+        let limit = scene.time_limit - from.time;
+        if !(limit > T::zero()) {
+            return Err(Error::TimeLimit);
+        }
+        let spin = from.spin.norm();
+        let axis = if spin > T::zero() {
+            from.spin / spin
+        } else {
+            Vector3::zeros()
+        };
+        let (p, v) = (from.position, from.velocity);
+        let y0: State<T> = [p.x, p.y, p.z, v.x, v.y, v.z, spin];
+        let mut method = self.method;
+        if let Method::Adaptive(cfg) = &mut method {
+            // First trial step: a little longer than the vacuum hop 2·v_n/g_n, so that a
+            // short hop usually takes one step (its landing is found inside it).
+            let g_n = scene.gravity * plane.normal.y;
+            let guess = lit::<T>(HOP_STEP_FACTOR) * v.dot(&plane.normal) / g_n;
+            if guess > T::zero() && guess.is_finite() {
+                cfg.initial_step = guess.min(lit(HOP_MAX_FIRST_STEP_S)).min(cfg.max_step);
+            }
+        }
+        let mut tracker = events::Tracker::hop(plane, &y0, axis, from.time, recorder);
+        let mut hop_stats = Stats::default();
+        let rhs = Dynamics { scene, axis };
+        let event_height = plane.offset / plane.normal.y;
+        let landing = integrate_to_event(
+            scene,
+            &rhs,
+            y0,
+            method,
+            limit,
+            event_height,
+            &mut tracker,
+            &mut hop_stats,
+        );
+        stats.force_evaluations = stats
+            .force_evaluations
+            .saturating_add(hop_stats.force_evaluations);
+        stats.steps = stats.steps.saturating_add(hop_stats.steps);
+        stats.rejected_steps = stats
+            .rejected_steps
+            .saturating_add(hop_stats.rejected_steps);
+        let landing = landing?;
+        let y = landing.state;
+        if !(y.iter().all(|x| x.is_finite()) && landing.time.is_finite()) {
+            return Err(Error::Unstable);
+        }
+        Ok(Contact {
+            time: from.time + landing.time,
+            position: Vector3::new(y[0], y[1], y[2]),
+            velocity: Vector3::new(y[3], y[4], y[5]),
+            spin: axis * y[S],
+        })
+    }
 }
 
 /// A validated integrator.

@@ -197,6 +197,23 @@ fn suite<T: Real>(ticks: &Ticks, k: &mut u32, p: &str) {
             .map(|o| (o.flight.stats.force_evaluations, to_f64(o.flight.carry_m)))
         },
     );
+    // The same shot with the seed's aerodynamics (the calibrated model is the default).
+    let seed = Scene::<T> {
+        aero: black_box(carry_core::aero::AeroModel::quintavalla()),
+        ..Scene::default()
+    }
+    .prepare(&ball)
+    .unwrap_or_else(|_| carry_firmware::exit(1));
+    op(
+        ticks,
+        k,
+        label!("FULL SHOT, seed aerodynamics (quintavalla)"),
+        1,
+        &mut || {
+            carry_core::shot::play(&club, &ball, &delivery, &seed, &fidelity, None)
+                .map(|o| (o.flight.stats.force_evaluations, to_f64(o.flight.carry_m)))
+        },
+    );
     // A launch monitor's everyday delivery: every angle non-zero, an off-centre strike
     // (the reference delivery's zero angles make the five sin/cos of `strike` trivial).
     let mut everyday = delivery;
@@ -218,6 +235,34 @@ fn suite<T: Real>(ticks: &Ticks, k: &mut u32, p: &str) {
                 .map(|o| (o.flight.stats.force_evaluations, to_f64(o.flight.carry_m)))
         },
     );
+    // The ground effect (issue 12): the same shot bouncing and rolling to rest. `evals`
+    // counts the flight's and the hops' force evaluations, `carry` shows the total.
+    for (name, surface) in [
+        (
+            label!("FULL SHOT + ground, firm fairway (to rest)"),
+            carry_core::ground::Surface::FairwayFirm,
+        ),
+        (
+            label!("FULL SHOT + ground, green stimp 10 (to rest)"),
+            carry_core::ground::Surface::green(),
+        ),
+    ] {
+        let with_ground = Scene::<T> {
+            ground: Some(carry_core::ground::Ground::level(surface)),
+            ..scene
+        };
+        let prepared = black_box(with_ground)
+            .prepare(&ball)
+            .unwrap_or_else(|_| carry_firmware::exit(1));
+        op(ticks, k, name, 1, &mut || {
+            carry_core::shot::play(&club, &ball, &delivery, &prepared, &fidelity, None).map(|o| {
+                let g = o.flight.ground.map_or((0, o.flight.carry_m), |g| {
+                    (g.stats.force_evaluations, g.total_m)
+                });
+                (o.flight.stats.force_evaluations + g.0, to_f64(g.1))
+            })
+        });
+    }
     let integrator = black_box(Integrator::<T>::default());
     op(
         ticks,

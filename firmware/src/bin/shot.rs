@@ -10,7 +10,7 @@ use carry_core::real::to_f64;
 use carry_core::scene::Scene;
 use carry_core::units::{to_deg, to_rpm};
 use carry_core::{ClubSpec, Delivery};
-use carry_firmware::shot::{self, R, REFERENCE_CARRY_M};
+use carry_firmware::shot::{self, CALIBRATED_CARRY_M, R};
 use core::hint::black_box;
 use cortex_m_rt::entry;
 
@@ -87,7 +87,8 @@ fn main() -> ! {
         stack,
         stack_full
     );
-    let off = carry - REFERENCE_CARRY_M;
+    // Scene::default() flies the calibrated model (tour2023), as a launch monitor would.
+    let off = carry - CALIBRATED_CARRY_M;
     defmt::println!("carry − f64 reference = {=f64} m", off);
     if off.abs() > 0.01 {
         defmt::error!("carry more than 1 cm off the reference");

@@ -101,6 +101,17 @@ impl AeroFamily {
         }
     }
 
+    /// The parameters of `model` in this family's order (`None` if it is of another
+    /// family).
+    #[must_use]
+    pub fn parameters(self, model: &AeroModel<f64>) -> Option<Vec<f64>> {
+        match (self, model) {
+            (Self::Quintavalla, AeroModel::Linear(c)) => Some(c.to_array().to_vec()),
+            (Self::Modern, AeroModel::Modern(c)) => Some(c.to_array().to_vec()),
+            _ => None,
+        }
+    }
+
     /// The model with fitted parameters `p`.
     #[must_use]
     pub fn model(self, p: &[f64]) -> AeroModel<f64> {

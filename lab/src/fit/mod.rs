@@ -36,6 +36,30 @@ impl Default for FitOptions {
     }
 }
 
+/// Tabulates `problem`'s errors on `rows` at fixed parameters `p` (no fitting): how a given
+/// model does on the data.
+///
+/// # Errors
+/// A row the model cannot predict.
+pub fn evaluate<P: Problem>(problem: &P, rows: &[P::Row], p: &[f64]) -> Result<Fit, String> {
+    let predicted: Vec<Vec<f64>> = rows
+        .par_iter()
+        .map(|r| problem.predict(p, r))
+        .collect::<Result<_, _>>()?;
+    let cost = residuals(problem, rows, p)?
+        .iter()
+        .map(|x| 0.5 * x * x)
+        .sum();
+    let solved = Solved {
+        parameters: p.to_vec(),
+        cost,
+        row_evaluations: rows.len(),
+        termination: "evaluated (not fitted)".into(),
+        converged: true,
+    };
+    Ok(report::tabulate(problem, rows, &solved, predicted, None))
+}
+
 /// Fits `problem` to `rows` and reports the residuals (and the leave-one-out errors).
 /// `progress` is called once per finished solve (1 + the number of rows with
 /// leave-one-out).

@@ -1,0 +1,143 @@
+//! Surfaces: named presets and custom turf, validated once into a [`Turf`].
+//!
+//! A turf is four numbers (docs/ground.md has the sources and the fits):
+//!
+//! ```text
+//! e₀   restitution at vanishing normal speed: e(v_n) = (e₀/0.510)·e_Penner(v_n)
+//! μ    ball–turf Coulomb friction during a bounce          (Penner 2002: 0.40)
+//! ρ    rolling resistance: a roll decelerates at (5/7)·ρ·g (Penner 2002: 0.131 on a green)
+//! κ    crater scale: the turf's crater tilts the impact by κ·θ_c (Penner 2002: κ = 1)
+//! ```
+//!
+//! On a green ρ comes from the stimpmeter: the stimpmeter releases the ball at
+//! `v₀ = 1.83 m/s` (Holmes 1986; Penner 2002, "The physics of putting") and it rolls the
+//! stimp reading S, so `(5/7)ρg = v₀²/(2S)`.
+
+use crate::error::{Error, Field, Reason, Result};
+use crate::real::{Real, lit};
+use crate::validate::{in_range, positive};
+
+/// Speed at which the stimpmeter releases the ball (m/s).
+pub const STIMPMETER_SPEED_MPS: f64 = 1.83;
+/// One foot (m): stimp readings are quoted in feet.
+pub const FOOT_M: f64 = 0.3048;
+/// Default green speed: stimp 10 ft (a fast club green; tour greens run 11–13).
+pub const DEFAULT_STIMP_M: f64 = 10.0 * FOOT_M;
+/// Accepted stimp readings (m): 1 ft to 30 ft.
+pub const STIMP_RANGE_M: (f64, f64) = (FOOT_M, 30.0 * FOOT_M);
+/// Penner's restitution at vanishing normal speed (2002, eq. 5).
+pub const PENNER_RESTITUTION_0: f64 = 0.510;
+/// Penner's ball–turf friction coefficient (2002).
+pub const PENNER_FRICTION: f64 = 0.40;
+/// Largest accepted friction coefficient, rolling resistance and crater scale.
+pub const MAX_TURF_COEFFICIENT: f64 = 10.0;
+
+/// The ground a ball lands on.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub enum Surface<T: Real> {
+    /// A firm, fast fairway (rolls like a stimp-8 green; Penner's green bounce).
+    FairwayFirm,
+    /// A soft, watered fairway (stimp-5 roll, 80 % of the restitution, deeper crater).
+    FairwaySoft,
+    /// Rough: high resistance, little bounce, a deep crater.
+    Rough,
+    /// A green of the given stimpmeter reading (m; [`DEFAULT_STIMP_M`] is 10 ft), with
+    /// Penner's measured green bounce.
+    Green {
+        /// Stimpmeter reading (m).
+        stimp_m: T,
+    },
+    /// Any turf.
+    Custom(Turf<T>),
+}
+
+/// The turf coefficients (see the module docs).
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct Turf<T> {
+    /// Restitution at vanishing normal speed e₀, in [0, 1].
+    pub restitution: T,
+    /// Ball–turf friction coefficient μ during a bounce, ≥ 0.
+    pub friction: T,
+    /// Rolling resistance ρ (the roll decelerates at (5/7)ρg), ≥ 0.
+    pub rolling_resistance: T,
+    /// Crater scale κ (multiplies Penner's crater angle), ≥ 0.
+    pub crater_scale: T,
+}
+
+/// `(5/7)ρg = v₀²/(2S)` solved for ρ, with standard gravity (the stimpmeter is read on
+/// Earth, whatever the scene's gravity).
+fn resistance_from_stimp<T: Real>(stimp_m: T) -> T {
+    let v0 = lit::<T>(STIMPMETER_SPEED_MPS);
+    v0 * v0 / (lit::<T>(2.0 * 5.0 / 7.0 * crate::scene::STANDARD_GRAVITY_MPS2) * stimp_m)
+}
+
+impl<T: Real> Surface<T> {
+    /// A green at the default stimp (10 ft).
+    #[must_use]
+    pub fn green() -> Self {
+        Self::Green {
+            stimp_m: lit(DEFAULT_STIMP_M),
+        }
+    }
+
+    /// The validated turf.
+    ///
+    /// # Errors
+    /// [`Field::Stimp`] outside 1–30 ft; for a custom turf [`Field::GroundRestitution`]
+    /// outside [0, 1], [`Field::GroundFriction`], [`Field::RollingResistance`] or
+    /// [`Field::CraterScale`] negative, not finite or above [`MAX_TURF_COEFFICIENT`].
+    pub fn turf(&self) -> Result<Turf<T>> {
+        let stimp = |feet: f64| resistance_from_stimp::<T>(lit(feet * FOOT_M));
+        let penner = |e_ratio: f64, rho: T, kappa: f64| Turf {
+            restitution: lit(PENNER_RESTITUTION_0 * e_ratio),
+            friction: lit(PENNER_FRICTION),
+            rolling_resistance: rho,
+            crater_scale: lit(kappa),
+        };
+        match *self {
+            Self::FairwayFirm => Ok(penner(1.0, stimp(8.0), 1.0)),
+            Self::FairwaySoft => Ok(penner(0.8, stimp(5.0), 1.2)),
+            Self::Rough => Ok(Turf {
+                restitution: lit(0.30),
+                friction: lit(0.60),
+                rolling_resistance: lit(0.30),
+                crater_scale: lit(1.3),
+            }),
+            Self::Green { stimp_m } => {
+                let s = positive(stimp_m, Field::Stimp)?;
+                let s = in_range(s, lit(STIMP_RANGE_M.0), lit(STIMP_RANGE_M.1), Field::Stimp)?;
+                Ok(penner(1.0, resistance_from_stimp(s), 1.0))
+            }
+            Self::Custom(t) => t.validated(),
+        }
+    }
+}
+
+impl<T: Real> Turf<T> {
+    /// Checks every coefficient (see [`Surface::turf`]).
+    ///
+    /// # Errors
+    /// As [`Surface::turf`] for a custom turf.
+    pub fn validated(&self) -> Result<Self> {
+        let coefficient = |x: T, field: Field| {
+            let x = crate::validate::non_negative(x, field)?;
+            if x > lit(MAX_TURF_COEFFICIENT) {
+                return Err(Error::invalid(field, Reason::OutOfRange));
+            }
+            Ok(x)
+        };
+        Ok(Self {
+            restitution: in_range(
+                self.restitution,
+                T::zero(),
+                T::one(),
+                Field::GroundRestitution,
+            )?,
+            friction: coefficient(self.friction, Field::GroundFriction)?,
+            rolling_resistance: coefficient(self.rolling_resistance, Field::RollingResistance)?,
+            crater_scale: coefficient(self.crater_scale, Field::CraterScale)?,
+        })
+    }
+}

@@ -1,0 +1,182 @@
+//! Fuzz the ground after the landing (issue 12): any surface (presets, any stimp, custom
+//! turf with any values, NaN and absurd ones included), any slope, wind and integrator,
+//! after a golf-like flight; and single bounces with any velocity and spin. A success
+//! must be finite and physical: the run ends at rest or at the roll time cap, after the
+//! landing, within the bounce budget, and a bounce never adds energy.
+#![no_main]
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
+use carry_core::flight::{Integrator, Recorder, Sample};
+use carry_core::ground::{Ground, MAX_BOUNCES, Surface, Turf};
+use carry_core::real::{lit, to_f64};
+use carry_core::scene::Scene;
+use carry_core::wind::Wind;
+use carry_core::{Ball, Error, Launch, Real, Result};
+use carry_fuzz::Bytes;
+use libfuzzer_sys::fuzz_target;
+use nalgebra::Vector3;
+
+fn v<T: Real>(a: [f64; 3]) -> Vector3<T> {
+    Vector3::new(lit(a[0]), lit(a[1]), lit(a[2]))
+}
+
+/// A number from the input: usually in range, sometimes anything (NaN, ∞, huge, negative).
+fn wild(b: &mut Bytes<'_>, lo: f64, hi: f64) -> f64 {
+    match b.byte() % 8 {
+        0 => f64::NAN,
+        1 => -b.param(0.0, 1e6),
+        2 => b.param(hi, 1e30),
+        3 => f64::INFINITY,
+        _ => b.param(lo, hi),
+    }
+}
+
+fn surface<T: Real>(b: &mut Bytes<'_>) -> Surface<T> {
+    match b.byte() % 5 {
+        0 => Surface::FairwayFirm,
+        1 => Surface::FairwaySoft,
+        2 => Surface::Rough,
+        3 => Surface::Green {
+            stimp_m: lit(wild(b, 0.3, 9.0)),
+        },
+        _ => Surface::Custom(Turf {
+            restitution: lit(wild(b, 0.0, 1.0)),
+            friction: lit(wild(b, 0.0, 2.0)),
+            rolling_resistance: lit(wild(b, 0.0, 1.0)),
+            crater_scale: lit(wild(b, 0.0, 3.0)),
+        }),
+    }
+}
+
+fn run<T: Real>(b: &mut Bytes<'_>) -> Result<()> {
+    let ball = Ball::<T>::standard();
+    let ground = Ground {
+        surface: surface::<T>(b),
+        normal: if b.flag() {
+            Vector3::y()
+        } else {
+            v(b.vec3(-1.0, 1.0)) + Vector3::y()
+        },
+    };
+    if b.flag() {
+        // One bounce through the public entry point.
+        let g = ground.prepare(ball.radius_m())?;
+        let vel: Vector3<T> = v(b.vec3(-80.0, 80.0));
+        let spin: Vector3<T> = v(b.vec3(-1500.0, 1500.0));
+        let r = g.bounce(&vel, &spin)?;
+        let energy = |v: &Vector3<T>, w: &Vector3<T>| {
+            to_f64(ball.mass_kg()) * to_f64(v.norm_squared())
+                + to_f64(ball.inertia_kgm2()) * to_f64(w.norm_squared())
+        };
+        if to_f64(vel.dot(&g.normal())) < 0.0 {
+            let (e0, e1) = (energy(&vel, &spin), energy(&r.velocity_mps, &r.spin_radps));
+            assert!(
+                e1 <= e0 * (1.0 + 1e-4) + 1e-9,
+                "bounce adds energy: {e0} → {e1}"
+            );
+        }
+        return Ok(());
+    }
+    let launch = Launch::<T> {
+        ball_speed_mps: lit(b.param(5.0, 90.0)),
+        launch_angle_rad: lit(b.param(0.05, 1.4)),
+        launch_direction_rad: lit(b.param(-0.3, 0.3)),
+        backspin_radps: lit(b.param(-300.0, 1300.0)),
+        sidespin_radps: lit(b.param(-400.0, 400.0)),
+    };
+    let wind = match b.byte() % 3 {
+        0 => Wind::None,
+        1 => Wind::Uniform(v(b.vec3(-15.0, 15.0))),
+        _ => Wind::profile(v(b.vec3(-15.0, 15.0))),
+    };
+    let scene = Scene::<T> {
+        wind,
+        landing_height_m: lit(b.param(-10.0, 10.0)),
+        ground: Some(ground),
+        ..Scene::default()
+    };
+    // Work bound (as in the flight target): steps of at least 5 ms, tolerances of at least
+    // 1e-6, so an input costs milliseconds, not seconds.
+    let integrator = match b.byte() % 3 {
+        0 => Integrator::Rk4 {
+            step_s: lit(b.param(5e-3, 0.05)),
+        },
+        1 => Integrator::dormand_prince(lit(b.param(1e-6, 1e-2))),
+        _ => Integrator::default(),
+    };
+    // `param` also yields special values (tiny, huge, raw bits): keep only inputs whose
+    // work is bounded, as the flight target does (a 1e-308 s step is legitimately slow).
+    let step_ok = match integrator {
+        Integrator::Rk4 { step_s } => to_f64(step_s) >= 5e-3,
+        Integrator::DormandPrince { rtol, atol, .. } => {
+            to_f64(rtol) >= 1e-6 && to_f64(atol) >= 1e-6
+        }
+        Integrator::Euler { .. } => false,
+    };
+    let calm = match wind {
+        Wind::None => true,
+        Wind::Uniform(w)
+        | Wind::Profile {
+            reference_mps: w, ..
+        } => w.iter().all(|x| to_f64(*x).abs() <= 30.0),
+    };
+    if !(step_ok && calm) {
+        return Ok(());
+    }
+    let motion = launch.ball_motion()?;
+    if std::env::var_os("CARRY_FUZZ_DEBUG").is_some() {
+        eprintln!("{motion:?}\n{scene:?}\n{integrator:?}");
+    }
+    let mut buffer: heapless::Vec<Sample<T>, 64> = heapless::Vec::new();
+    let mut recorder = if b.flag() {
+        Recorder::new(lit(b.param(1e-3, 0.5)), &mut buffer).ok()
+    } else {
+        None
+    };
+    let out = match scene
+        .prepare(&ball)?
+        .fly(&motion, &integrator, recorder.as_mut())
+    {
+        Ok(out) => out,
+        Err(
+            Error::InvalidInput { .. }
+            | Error::NoLanding
+            | Error::TimeLimit
+            | Error::StepSizeUnderflow
+            | Error::StepLimit
+            | Error::Unstable,
+        ) => return Ok(()),
+        Err(e) => panic!("flight returned an impact error: {e:?}"),
+    };
+    let g = out.ground.expect("a ground gives a rollout");
+    assert!(
+        [g.total_m, g.roll_m, g.time_to_rest_s]
+            .iter()
+            .chain(g.rest_position_m.iter())
+            .all(|x| x.is_finite()),
+        "non-finite rollout {g:?}"
+    );
+    assert!(g.time_to_rest_s >= out.flight_time_s, "{g:?}");
+    assert!(g.total_m >= T::zero() && g.bounces <= MAX_BOUNCES);
+    if let Some(r) = recorder {
+        assert!(r.samples().windows(2).all(|w| w[1].time_s >= w[0].time_s));
+        for s in r.samples() {
+            assert!(
+                s.position_m
+                    .iter()
+                    .chain(s.velocity_mps.iter())
+                    .all(|x| x.is_finite())
+            );
+        }
+    }
+    Ok(())
+}
+
+fuzz_target!(|data: &[u8]| {
+    let mut b = Bytes::new(data);
+    let _ = if b.flag() {
+        run::<f32>(&mut b)
+    } else {
+        run::<f64>(&mut b)
+    };
+});

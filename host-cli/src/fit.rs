@@ -1,0 +1,678 @@
+//! `carry fit`: fits a model family's coefficients to measured shots (the fitting itself is
+//! `carry_lab::fit`); this module reads the CSV in the CLI's names and units, shows
+//! progress, and prints the coefficients, the per-row residuals, the summaries and the
+//! leave-one-out errors, or writes the fitted model as TOML.
+//!
+//! Input columns (header names, case-insensitive; `-` and `_` alike):
+//! * launch: `ball_speed`, `launch_angle` (or `launch`), `launch_direction`, and
+//!   `backspin` + `sidespin` or `spin` + `spin_axis`;
+//! * observed: `carry` (required), `apex` (or `max_height`), `land_angle` (or `land`),
+//!   `flight_time`, `side`;
+//! * conditions per row (override the options): `temperature`, `humidity` (%),
+//!   `pressure` (Pa) or `altitude`, `air_density`;
+//! * `label`, `weight` (default 1).
+//!
+//! Values are in `--units`, unless the column name ends in a unit: `_mph`, `_mps`, `_yd`,
+//! `_ft`, `_m`, `_deg`, `_rpm`, `_s`, `_c`, `_f`, `_pa`, `_pct` (so TrackMan's
+//! `ball_speed_mph, launch_deg, spin_rpm, max_height_yd, land_deg, carry_yd` read as they
+//! are). Without a `label` column, the text of `tour`, `who`, `club` and `source` columns
+//! labels the rows. Other columns are ignored and listed.
+
+use crate::error::{Failure, InputError};
+use crate::units::{Quantity, Units};
+use carry_core::air::{Pressure, Weather};
+use carry_core::units::{M_PER_FOOT, M_PER_YARD, MPS_PER_MPH, deg, rpm};
+use carry_core::{Air, Launch};
+use carry_lab::fit::flight::{AeroFamily, AeroProblem, ShotRow};
+use carry_lab::fit::{self, Fit, FitOptions};
+use clap::Args;
+use serde::Serialize;
+use std::fmt::Write as _;
+use std::io::IsTerminal as _;
+use std::path::PathBuf;
+
+/// `carry fit`.
+#[derive(Debug, Clone, Args)]
+pub struct FitCmd {
+    /// Measured shots (CSV; `-` for standard input). See `carry fit --help` for columns.
+    #[arg(long, value_name = "FILE.csv")]
+    pub input: PathBuf,
+    /// Model family to fit: `modern` (drag crisis, saturating lift, Smits & Smith spin
+    /// decay; 7 coefficients) or `quintavalla` (the seed's linear family, 5 coefficients).
+    #[arg(long, default_value = "modern", value_name = "FAMILY")]
+    pub family: String,
+    /// Write the fitted model here (TOML; use it with `--aero FILE.toml`).
+    #[arg(long, value_name = "MODEL.toml")]
+    pub output: Option<PathBuf>,
+    /// Do not fit: report how this model (`tour2023`, `quintavalla` or a model file) does
+    /// on the input (its family replaces --family).
+    #[arg(long, value_name = "NAME|FILE.toml", conflicts_with = "output")]
+    pub evaluate: Option<String>,
+    /// Skip the leave-one-out cross-validation (one refit per row).
+    #[arg(long)]
+    pub no_cross_validation: bool,
+    /// Input and display units (JSON stays SI).
+    #[arg(long, value_enum, default_value_t = Units::Si)]
+    pub units: Units,
+    /// Print JSON (SI).
+    #[arg(long)]
+    pub json: bool,
+    /// No progress bar.
+    #[arg(long)]
+    pub no_progress: bool,
+    /// Air density of rows without conditions [kg/m³] (default 1.225). Excludes weather.
+    #[arg(long, value_name = "KG/M3", conflicts_with_all = ["temperature", "humidity", "pressure", "altitude"])]
+    pub air_density: Option<f64>,
+    /// Temperature of rows without conditions [°C | °F] (weather; default 15 °C).
+    #[arg(long, value_name = "T", allow_hyphen_values = true)]
+    pub temperature: Option<f64>,
+    /// Relative humidity of rows without conditions [%] (weather; default 0).
+    #[arg(long, value_name = "PCT")]
+    pub humidity: Option<f64>,
+    /// Station pressure of rows without conditions [Pa] (weather). Excludes --altitude.
+    #[arg(long, value_name = "PA", conflicts_with = "altitude")]
+    pub pressure: Option<f64>,
+    /// Altitude of rows without conditions [m | ft] (weather).
+    #[arg(long, value_name = "H", allow_hyphen_values = true)]
+    pub altitude: Option<f64>,
+}
+
+/// Help text after the options.
+pub const AFTER_HELP: &str = "\
+Input columns: ball_speed, launch_angle, launch_direction, backspin+sidespin or spin+spin_axis; \
+carry (required), apex, land_angle, flight_time, side; optional temperature, humidity, \
+pressure|altitude, air_density, label, weight. A unit suffix (_mph _mps _yd _ft _m _deg _rpm _s \
+_c _f _pa _pct) overrides --units, so TrackMan exports read as they are:
+  carry fit --input ../shared/data/trackman_tour_2023.csv --temperature 21.1 --humidity 50 \
+--pressure 101325 --output tour.toml";
+
+/// Conditions given per row or globally (SI; humidity in percent).
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Conditions {
+    /// Air density (kg/m³).
+    pub air_density: Option<f64>,
+    /// Temperature (°C).
+    pub temperature_c: Option<f64>,
+    /// Relative humidity (%).
+    pub humidity_pct: Option<f64>,
+    /// Station pressure (Pa).
+    pub pressure_pa: Option<f64>,
+    /// Altitude (m).
+    pub altitude_m: Option<f64>,
+}
+
+impl Conditions {
+    fn or(self, global: Self) -> Self {
+        let any = self.air_density.is_some()
+            || self.temperature_c.is_some()
+            || self.humidity_pct.is_some()
+            || self.pressure_pa.is_some()
+            || self.altitude_m.is_some();
+        if any { self } else { global }
+    }
+
+    fn air(self) -> Result<Air<f64>, String> {
+        let weather = self.temperature_c.is_some()
+            || self.humidity_pct.is_some()
+            || self.pressure_pa.is_some()
+            || self.altitude_m.is_some();
+        match (self.air_density, weather) {
+            (Some(_), true) => Err("give either the air density or the weather, not both".into()),
+            (Some(rho), false) => Ok(Air::Density(rho)),
+            (None, false) => Ok(Air::default()),
+            (None, true) => Ok(Air::Weather(Weather {
+                temperature_c: self
+                    .temperature_c
+                    .unwrap_or(crate::scene::DEFAULT_TEMPERATURE_C),
+                relative_humidity: self.humidity_pct.unwrap_or(0.0) / 100.0,
+                pressure: match (self.pressure_pa, self.altitude_m) {
+                    (Some(_), Some(_)) => {
+                        return Err("give either the pressure or the altitude, not both".into());
+                    }
+                    (Some(p), None) => Pressure::Pa(p),
+                    (None, h) => Pressure::Altitude(h.unwrap_or(0.0)),
+                },
+            })),
+        }
+    }
+}
+
+/// What a column holds.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Field {
+    BallSpeed,
+    LaunchAngle,
+    LaunchDirection,
+    Backspin,
+    Sidespin,
+    Spin,
+    SpinAxis,
+    Carry,
+    Apex,
+    LandAngle,
+    FlightTime,
+    Side,
+    Temperature,
+    Humidity,
+    Pressure,
+    Altitude,
+    AirDensity,
+    Weight,
+}
+
+const NAMES: &[(&str, Field)] = &[
+    ("ball_speed", Field::BallSpeed),
+    ("launch_angle", Field::LaunchAngle),
+    ("launch", Field::LaunchAngle),
+    ("launch_direction", Field::LaunchDirection),
+    ("backspin", Field::Backspin),
+    ("sidespin", Field::Sidespin),
+    ("spin", Field::Spin),
+    ("spin_axis", Field::SpinAxis),
+    ("carry", Field::Carry),
+    ("apex", Field::Apex),
+    ("max_height", Field::Apex),
+    ("land_angle", Field::LandAngle),
+    ("land", Field::LandAngle),
+    ("flight_time", Field::FlightTime),
+    ("side", Field::Side),
+    ("temperature", Field::Temperature),
+    ("humidity", Field::Humidity),
+    ("pressure", Field::Pressure),
+    ("altitude", Field::Altitude),
+    ("air_density", Field::AirDensity),
+    ("weight", Field::Weight),
+];
+
+/// Label-source columns when there is no `label`.
+const LABEL_PARTS: [&str; 4] = ["tour", "who", "club", "source"];
+
+/// A conversion of a column's values to SI.
+type ToSi = fn(f64) -> f64;
+
+/// A unit a column name may end in: how to turn its values into SI.
+fn suffix_unit(name: &str) -> Option<(&str, ToSi)> {
+    const SUFFIXES: &[(&str, ToSi)] = &[
+        ("_mph", |x| x * MPS_PER_MPH),
+        ("_mps", |x| x),
+        ("_yd", |x| x * M_PER_YARD),
+        ("_ft", |x| x * M_PER_FOOT),
+        ("_m", |x| x),
+        ("_deg", |x| x),
+        ("_rpm", |x| x),
+        ("_s", |x| x),
+        ("_c", |x| x),
+        ("_f", |x| (x - 32.0) * (5.0 / 9.0)),
+        ("_pa", |x| x),
+        ("_pct", |x| x),
+    ];
+    SUFFIXES
+        .iter()
+        .find_map(|&(s, f)| name.strip_suffix(s).map(|base| (base, f)))
+}
+
+fn quantity(f: Field) -> Quantity {
+    match f {
+        Field::BallSpeed => Quantity::Speed,
+        Field::Carry | Field::Side => Quantity::Long,
+        Field::Apex | Field::Altitude => Quantity::Height,
+        Field::Temperature => Quantity::Temperature,
+        _ => Quantity::Plain,
+    }
+}
+
+/// A column: its index, field and conversion.
+struct Column {
+    index: usize,
+    field: Field,
+    to_si: Box<dyn Fn(f64) -> f64>,
+}
+
+/// The rows of a fit input and the names of the columns it ignored.
+///
+/// # Errors
+/// An unreadable file, no header, no `carry` column, or a bad value (naming the line and
+/// the column).
+pub fn read_rows(
+    input: &PathBuf,
+    units: Units,
+    global: &Conditions,
+) -> Result<(Vec<ShotRow>, Vec<String>), InputError> {
+    let (source, _) = crate::batch::open(input)?;
+    let name = input.display().to_string();
+    let mut rdr = csv::ReaderBuilder::new()
+        .has_headers(true)
+        .flexible(true)
+        .trim(csv::Trim::All)
+        .comment(Some(b'#'))
+        .from_reader(source);
+    let header = rdr
+        .headers()
+        .map_err(|e| InputError::new("input", format!("{name}: cannot read the header: {e}")))?
+        .clone();
+    let mut columns = Vec::new();
+    let (mut label, mut label_parts, mut ignored) = (None, Vec::new(), Vec::new());
+    for (i, h) in header.iter().enumerate() {
+        let h = h.to_ascii_lowercase().replace('-', "_");
+        if h == "label" {
+            label = Some(i);
+            continue;
+        }
+        let known = |n: &str| NAMES.iter().find(|(k, _)| *k == n).map(|&(_, f)| f);
+        let column = if let Some(f) = known(&h) {
+            let q = quantity(f);
+            Some((
+                f,
+                Box::new(move |x| units.to_si(q, x)) as Box<dyn Fn(f64) -> f64>,
+            ))
+        } else if let Some((base, conv)) = suffix_unit(&h) {
+            known(base).map(|f| (f, Box::new(conv) as Box<dyn Fn(f64) -> f64>))
+        } else {
+            None
+        };
+        match column {
+            Some((field, to_si)) => {
+                if columns.iter().any(|c: &Column| c.field == field) {
+                    return Err(InputError::new(
+                        "input",
+                        format!("{name}: column '{h}' repeats another column's quantity"),
+                    ));
+                }
+                columns.push(Column {
+                    index: i,
+                    field,
+                    to_si,
+                });
+            }
+            None if LABEL_PARTS.contains(&h.as_str()) => label_parts.push(i),
+            None => ignored.push(h),
+        }
+    }
+    let has = |f: Field| columns.iter().any(|c| c.field == f);
+    for (need, what) in [
+        (Field::Carry, "carry"),
+        (Field::BallSpeed, "ball_speed"),
+        (Field::LaunchAngle, "launch_angle"),
+    ] {
+        if !has(need) {
+            return Err(InputError::new(
+                "input",
+                format!("{name}: no '{what}' column"),
+            ));
+        }
+    }
+    if !(has(Field::Backspin) || has(Field::Spin)) {
+        return Err(InputError::new(
+            "input",
+            format!("{name}: no 'backspin' or 'spin' column"),
+        ));
+    }
+    let mut rows = Vec::new();
+    for (n, record) in rdr.records().enumerate() {
+        let line = n + 2;
+        let record = record.map_err(|e| InputError::new("input", format!("line {line}: {e}")))?;
+        let mut v: Vec<(Field, f64)> = Vec::new();
+        for c in &columns {
+            let text = record.get(c.index).unwrap_or("").trim();
+            if text.is_empty() {
+                continue;
+            }
+            let col = header.get(c.index).unwrap_or("?");
+            let x: f64 = text.parse().map_err(|_| {
+                InputError::new(
+                    "input",
+                    format!("line {line}: {col}: '{text}' is not a number"),
+                )
+            })?;
+            if !x.is_finite() {
+                return Err(InputError::new(
+                    "input",
+                    format!("line {line}: {col}: '{text}' is not a finite number"),
+                ));
+            }
+            v.push((c.field, (c.to_si)(x)));
+        }
+        let get = |f: Field| v.iter().find(|(g, _)| *g == f).map(|&(_, x)| x);
+        let missing =
+            |what: &str| InputError::new("input", format!("line {line}: {what}: missing value"));
+        let (backspin, sidespin) = match (get(Field::Backspin), get(Field::Spin)) {
+            (Some(b), _) => (b, get(Field::Sidespin).unwrap_or(0.0)),
+            (None, Some(s)) => {
+                let axis = get(Field::SpinAxis).unwrap_or(0.0).to_radians();
+                (s * axis.cos(), s * axis.sin())
+            }
+            (None, None) => return Err(missing("backspin")),
+        };
+        let conditions = Conditions {
+            air_density: get(Field::AirDensity),
+            temperature_c: get(Field::Temperature),
+            humidity_pct: get(Field::Humidity),
+            pressure_pa: get(Field::Pressure),
+            altitude_m: get(Field::Altitude),
+        }
+        .or(*global);
+        let air = conditions
+            .air()
+            .map_err(|e| InputError::new("input", format!("line {line}: {e}")))?;
+        let weight = get(Field::Weight).unwrap_or(1.0);
+        if !(weight > 0.0) {
+            return Err(InputError::new(
+                "input",
+                format!("line {line}: weight: must be positive"),
+            ));
+        }
+        let text = |i: usize| record.get(i).unwrap_or("").to_string();
+        let label = label.map(text).unwrap_or_else(|| {
+            let parts: Vec<String> = label_parts.iter().map(|&i| text(i)).collect();
+            if parts.is_empty() {
+                format!("line {line}")
+            } else {
+                parts.join(" ")
+            }
+        });
+        rows.push(ShotRow {
+            label,
+            launch: Launch {
+                ball_speed_mps: get(Field::BallSpeed).ok_or_else(|| missing("ball_speed"))?,
+                launch_angle_rad: deg(
+                    get(Field::LaunchAngle).ok_or_else(|| missing("launch_angle"))?
+                ),
+                launch_direction_rad: deg(get(Field::LaunchDirection).unwrap_or(0.0)),
+                backspin_radps: rpm(backspin),
+                sidespin_radps: rpm(sidespin),
+            },
+            air,
+            carry_m: get(Field::Carry).ok_or_else(|| missing("carry"))?,
+            apex_m: get(Field::Apex),
+            land_angle_deg: get(Field::LandAngle),
+            flight_time_s: get(Field::FlightTime),
+            side_m: get(Field::Side),
+            weight,
+        });
+    }
+    if rows.is_empty() {
+        return Err(InputError::new("input", format!("{name}: no rows")));
+    }
+    Ok((rows, ignored))
+}
+
+/// The JSON document of a fit (SI).
+#[derive(Serialize)]
+struct Report<'a> {
+    family: &'a str,
+    rows: usize,
+    ignored_columns: &'a [String],
+    coefficients: serde_json::Map<String, serde_json::Value>,
+    fit: &'a Fit,
+}
+
+impl FitCmd {
+    fn conditions(&self) -> Conditions {
+        let u = self.units;
+        Conditions {
+            air_density: self.air_density,
+            temperature_c: self.temperature.map(|t| u.to_si(Quantity::Temperature, t)),
+            humidity_pct: self.humidity,
+            pressure_pa: self.pressure,
+            altitude_m: self.altitude.map(|h| u.to_si(Quantity::Height, h)),
+        }
+    }
+}
+
+/// Runs `carry fit`.
+///
+/// # Errors
+/// Bad input (status 2); a fit that cannot start or a file that cannot be written.
+pub fn run(cmd: &FitCmd) -> Result<(), Failure> {
+    let evaluate = match &cmd.evaluate {
+        Some(name) => {
+            Some(carry_lab::aero_file::resolve(name).map_err(|e| InputError::new("evaluate", e))?)
+        }
+        None => None,
+    };
+    let family = match &evaluate {
+        Some(m) => Some(AeroFamily::of(m)),
+        None => AeroFamily::named(&cmd.family),
+    };
+    let family = family.ok_or_else(|| {
+        let names: Vec<&str> = AeroFamily::ALL.iter().map(|(n, _)| *n).collect();
+        InputError::new(
+            "family",
+            format!(
+                "unknown family '{}' (families: {})",
+                cmd.family,
+                names.join(", ")
+            ),
+        )
+    })?;
+    let global = cmd.conditions();
+    global
+        .air()
+        .map_err(|e| InputError::new("temperature", e))?;
+    let (rows, ignored) = read_rows(&cmd.input, cmd.units, &global)?;
+    let problem = AeroProblem::new(family);
+    let options = FitOptions {
+        leave_one_out: !cmd.no_cross_validation,
+    };
+    let solves = 1 + if options.leave_one_out { rows.len() } else { 0 };
+    let bar = (!cmd.no_progress && std::io::stderr().is_terminal()).then(|| {
+        let bar = indicatif::ProgressBar::new(solves as u64);
+        bar.set_style(
+            indicatif::ProgressStyle::with_template(
+                "fitting {bar:40} {pos}/{len} solves, eta {eta}",
+            )
+            .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+        );
+        bar
+    });
+    let tick = || {
+        if let Some(b) = &bar {
+            b.inc(1);
+        }
+    };
+    let result = match evaluate.as_ref().and_then(|m| family.parameters(m)) {
+        Some(p) => fit::evaluate(&problem, &rows, &p),
+        None => fit::fit(&problem, &rows, options, &tick),
+    }
+    .map_err(|e| Failure::Other(format!("the fit failed: {e}")))?;
+    if let Some(b) = &bar {
+        b.finish_and_clear();
+    }
+    let model = family.model(&result.values());
+    if let Some(path) = &cmd.output {
+        let summary = result.summary_of("carry").copied().unwrap_or_default();
+        let comment = format!(
+            "carry aerodynamic model (family {}), fitted by `carry fit` to {} rows of {}\n\
+             carry mean |error| {:.2} %, max {:.2} %{}",
+            family_name(family),
+            rows.len(),
+            cmd.input.display(),
+            summary.mean_abs_pct,
+            summary.max_abs_pct,
+            result
+                .loo_summary_of("carry")
+                .map(|l| format!("; leave-one-out mean {:.2} %", l.mean_abs_pct))
+                .unwrap_or_default(),
+        );
+        std::fs::write(path, carry_lab::aero_file::to_toml(&model, &comment))
+            .map_err(|e| Failure::Other(format!("cannot write {}: {e}", path.display())))?;
+    }
+    let text = if cmd.json {
+        let coefficients = carry_lab::aero_file::coefficients(&model)
+            .into_iter()
+            .map(|(k, v)| (k.to_string(), serde_json::json!(v)))
+            .collect();
+        let report = Report {
+            family: family_name(family),
+            rows: rows.len(),
+            ignored_columns: &ignored,
+            coefficients,
+            fit: &result,
+        };
+        let mut s =
+            serde_json::to_string_pretty(&report).map_err(|e| Failure::Other(e.to_string()))?;
+        s.push('\n');
+        s
+    } else {
+        table(family, &result, &ignored, cmd)
+    };
+    crate::write_stdout(text.as_bytes())
+}
+
+fn family_name(f: AeroFamily) -> &'static str {
+    AeroFamily::ALL
+        .iter()
+        .find(|(_, g)| *g == f)
+        .map_or("?", |(n, _)| n)
+}
+
+/// The readable report.
+fn table(family: AeroFamily, f: &Fit, ignored: &[String], cmd: &FitCmd) -> String {
+    let u = cmd.units;
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "FIT  family {}, {} rows, {} ({} flights)",
+        family_name(family),
+        f.rows.len(),
+        if cmd.evaluate.is_some() {
+            "evaluated, not fitted"
+        } else if f.converged {
+            "converged"
+        } else {
+            "NOT converged"
+        },
+        f.row_evaluations
+    );
+    if !ignored.is_empty() {
+        let _ = writeln!(s, "  ignored columns: {}", ignored.join(", "));
+    }
+    let _ = writeln!(s, "\nCOEFFICIENTS");
+    for p in &f.parameters {
+        let _ = writeln!(
+            s,
+            "  {:<20} {:>12.6}   bounds [{}, {}]{}",
+            p.name,
+            p.value,
+            p.lower,
+            p.upper,
+            if (p.value - p.lower).abs() < 1e-6 * (p.upper - p.lower)
+                || (p.value - p.upper).abs() < 1e-6 * (p.upper - p.lower)
+            {
+                "  (on a bound)"
+            } else {
+                ""
+            }
+        );
+    }
+    // Columns: carry, apex, landing angle (the quantities every launch monitor reports).
+    let (long, height) = (
+        u.input_symbol(Quantity::Long),
+        u.input_symbol(Quantity::Height),
+    );
+    let _ = writeln!(
+        s,
+        "\nROWS{:22}carry [{long}]{:14}apex [{height}]{:8}landing angle [deg]",
+        "", "", ""
+    );
+    let _ = writeln!(
+        s,
+        "  {:>3}  {:<16} {:>7} {:>7} {:>6} {:>6}   {:>6} {:>6} {:>6}   {:>5} {:>5} {:>5}",
+        "#",
+        "label",
+        "meas",
+        "model",
+        "err%",
+        "loo%",
+        "meas",
+        "model",
+        "err",
+        "meas",
+        "model",
+        "err"
+    );
+    let disp = |q: Quantity, x: f64| u.to_display(q, x);
+    for r in &f.rows {
+        let obs = |i: usize| r.observed.get(i).copied().flatten();
+        let pred = |i: usize| r.predicted.get(i).copied().unwrap_or(f64::NAN);
+        let carry_obs = obs(0).unwrap_or(f64::NAN);
+        let loo = r
+            .loo_predicted
+            .as_ref()
+            .and_then(|l| l.first())
+            .map_or(String::from("-"), |l| {
+                format!("{:+.1}", 100.0 * (l - carry_obs) / carry_obs)
+            });
+        let cell = |i: usize, q: Quantity, prec: usize| match obs(i) {
+            Some(o) => format!(
+                "{:>6.p$} {:>6.p$} {:>+6.p$}",
+                disp(q, o),
+                disp(q, pred(i)),
+                disp(q, pred(i)) - disp(q, o),
+                p = prec
+            ),
+            None => format!("{:>6} {:>6.prec$} {:>6}", "-", disp(q, pred(i)), "-"),
+        };
+        let label: String = r.label.chars().take(16).collect();
+        let _ = writeln!(
+            s,
+            "  {:>3}  {:<16} {:>7.1} {:>7.1} {:>+6.1} {:>6}   {}   {}",
+            r.row,
+            label,
+            disp(Quantity::Long, carry_obs),
+            disp(Quantity::Long, pred(0)),
+            100.0 * (pred(0) - carry_obs) / carry_obs,
+            loo,
+            cell(1, Quantity::Height, 1),
+            cell(2, Quantity::Plain, 1),
+        );
+    }
+    let _ = writeln!(
+        s,
+        "\nERRORS{:14}mean |err|      max |err|      leave-one-out mean / max",
+        ""
+    );
+    let units = [
+        ("carry", Quantity::Long, long),
+        ("apex", Quantity::Height, height),
+        ("land_angle", Quantity::Plain, "deg"),
+        ("flight_time", Quantity::Plain, "s"),
+        ("side", Quantity::Long, long),
+    ];
+    for (i, (name, q, sym)) in units.iter().enumerate() {
+        let Some(m) = f.summary.get(i).filter(|m| m.rows > 0) else {
+            continue;
+        };
+        let pct = if *name == "carry" {
+            format!(" ({:.2} %)", m.mean_abs_pct)
+        } else {
+            String::new()
+        };
+        let loo = f
+            .loo_summary
+            .as_ref()
+            .and_then(|l| l.get(i))
+            .map_or(String::from("-"), |l| {
+                if *name == "carry" {
+                    format!("{:.2} % / {:.2} %", l.mean_abs_pct, l.max_abs_pct)
+                } else {
+                    format!(
+                        "{:.2} / {:.2} {sym}",
+                        disp(*q, l.mean_abs),
+                        disp(*q, l.max_abs)
+                    )
+                }
+            });
+        let _ = writeln!(
+            s,
+            "  {:<16} {:>7.2} {sym:<3}{pct:<11} {:>7.2} {sym:<5} {loo}",
+            name,
+            disp(*q, m.mean_abs),
+            disp(*q, m.max_abs),
+        );
+    }
+    if let Some(path) = &cmd.output {
+        let _ = writeln!(s, "\nwrote {}", path.display());
+    }
+    s
+}

@@ -1,0 +1,249 @@
+//! `carry fit` and `--aero` end to end: the fit on the measured data, model files round
+//! trip, bad input is one line and status 2.
+
+use assert_cmd::Command;
+use serde_json::Value;
+use std::path::PathBuf;
+
+fn carry() -> Command {
+    Command::cargo_bin("carry").expect("the carry binary is built")
+}
+
+fn run(args: &[&str]) -> (i32, String, String) {
+    let out = carry().args(args).output().expect("carry runs");
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+fn json(args: &[&str]) -> Value {
+    let (code, out, err) = run(args);
+    assert_eq!(code, 0, "{err}");
+    serde_json::from_str(&out).expect("JSON")
+}
+
+fn tmp(name: &str, text: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("carry-fit-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let p = dir.join(name);
+    std::fs::write(&p, text).expect("write");
+    p
+}
+
+fn tour_data() -> Option<String> {
+    let p =
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../shared/data/trackman_tour_2023.csv");
+    p.exists().then(|| p.display().to_string())
+}
+
+/// Shots flown with the seed model (values from `carry flight --aero quintavalla`), in
+/// the CLI's own column names and imperial units.
+fn seed_shots() -> PathBuf {
+    let mut csv =
+        String::from("label,ball_speed,launch_angle,spin,spin_axis,carry,apex,land_angle\n");
+    for (i, (speed, angle, spin)) in [
+        (167.0, 10.9, 2686.0),
+        (120.0, 16.3, 7097.0),
+        (102.0, 24.2, 9304.0),
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        let f = json(&[
+            "flight",
+            "--json",
+            "--aero",
+            "quintavalla",
+            "--units",
+            "imperial",
+            "--ball-speed",
+            &speed.to_string(),
+            "--launch-angle",
+            &angle.to_string(),
+            "--spin",
+            &spin.to_string(),
+        ]);
+        let fl = &f["flight"];
+        let (carry, apex) = (
+            fl["carry_m"].as_f64().unwrap_or(0.0),
+            fl["apex_m"].as_f64().unwrap_or(0.0),
+        );
+        csv.push_str(&format!(
+            "shot {i},{speed},{angle},{spin},0,{},{},{}\n",
+            carry / 0.9144,
+            apex / 0.3048,
+            fl["land_angle_deg"].as_f64().unwrap_or(0.0)
+        ));
+    }
+    tmp("seed.csv", &csv)
+}
+
+#[test]
+fn evaluating_the_seed_on_its_own_shots_gives_zero_error() {
+    let input = seed_shots();
+    let v = json(&[
+        "fit",
+        "--input",
+        input.to_str().unwrap_or(""),
+        "--units",
+        "imperial",
+        "--evaluate",
+        "quintavalla",
+        "--json",
+    ]);
+    assert_eq!(v["family"], "quintavalla");
+    assert_eq!(v["rows"], 3);
+    let carry = &v["fit"]["summary"][0];
+    assert!(
+        carry["max_abs"].as_f64().is_some_and(|e| e < 1e-3),
+        "{carry}"
+    );
+    // The calibrated model does not fly the seed's shots the same.
+    let v = json(&[
+        "fit",
+        "--input",
+        input.to_str().unwrap_or(""),
+        "--units",
+        "imperial",
+        "--evaluate",
+        "tour2023",
+        "--json",
+    ]);
+    assert!(
+        v["fit"]["summary"][0]["max_abs"]
+            .as_f64()
+            .is_some_and(|e| e > 1.0)
+    );
+}
+
+#[test]
+fn fits_the_tour_data_and_the_model_file_round_trips() {
+    let Some(data) = tour_data() else {
+        return; // ../shared absent
+    };
+    let model = std::env::temp_dir().join(format!("carry-fit-model-{}.toml", std::process::id()));
+    let m = model.to_str().unwrap_or("");
+    let conditions = [
+        "--temperature",
+        "21.1",
+        "--humidity",
+        "50",
+        "--pressure",
+        "101325",
+    ];
+    let mut args = vec!["fit", "--input", &data, "--json", "--output", m];
+    args.extend(conditions);
+    let v = json(&args);
+    assert_eq!(v["rows"], 23);
+    assert_eq!(v["fit"]["converged"], true);
+    let carry = &v["fit"]["summary"][0];
+    assert!(
+        carry["mean_abs_pct"].as_f64().is_some_and(|e| e < 2.0),
+        "{carry}"
+    );
+    assert!(
+        v["fit"]["loo_summary"][0]["mean_abs_pct"]
+            .as_f64()
+            .is_some_and(|e| e < 2.5)
+    );
+    assert_eq!(
+        v["ignored_columns"],
+        serde_json::json!(["club_speed_mph", "attack_deg", "smash"])
+    );
+    assert_eq!(v["fit"]["rows"][0]["label"], "PGA driver");
+    // The written model reproduces the fit exactly.
+    let mut args = vec!["fit", "--input", &data, "--json", "--evaluate", m];
+    args.extend(conditions);
+    let e = json(&args);
+    assert_eq!(
+        e["fit"]["rows"],
+        v["fit"]["rows"]
+            .as_array()
+            .map(|rows| {
+                rows.iter()
+                    .map(|r| {
+                        let mut r = r.clone();
+                        r["loo_predicted"] = Value::Null;
+                        r
+                    })
+                    .collect::<Vec<_>>()
+            })
+            .map(Value::from)
+            .unwrap_or_default()
+    );
+    // And flies.
+    let (code, _, err) = run(&["flight", "--aero", m]);
+    assert_eq!(code, 0, "{err}");
+}
+
+#[test]
+fn a_model_file_flies_bit_for_bit_like_the_built_in() {
+    let file = tmp(
+        "q.toml",
+        "family = \"quintavalla\"\ncd0 = 0.171\ncd_spin = 0.62\ncl0 = 0.083\ncl_spin = 0.885\ncm_spin = 0.0125\n",
+    );
+    let a = json(&["flight", "--json", "--aero", file.to_str().unwrap_or("")]);
+    let b = json(&["flight", "--json", "--aero", "quintavalla"]);
+    assert_eq!(a["flight"], b["flight"]);
+    // Scene files name the model too (a relative path is relative to the scene file).
+    let scene = tmp("scene.toml", "aero = \"q.toml\"\n");
+    let c = json(&["flight", "--json", "--scene", scene.to_str().unwrap_or("")]);
+    assert_eq!(c["flight"], b["flight"]);
+    // The calibrated default is what no option gives.
+    let d = json(&["flight", "--json"]);
+    let e = json(&["flight", "--json", "--aero", "tour2023"]);
+    assert_eq!(d["flight"], e["flight"]);
+    assert_ne!(d["flight"]["carry_m"], b["flight"]["carry_m"]);
+}
+
+#[test]
+fn bad_input_is_one_line_and_status_two() {
+    let bad_row = tmp(
+        "bad.csv",
+        "ball_speed,launch_angle,spin,carry\n70,12,2500,230\n70,twelve,2500,230\n",
+    );
+    let no_carry = tmp("nocarry.csv", "ball_speed,launch_angle,spin\n70,12,2500\n");
+    let bad_model = tmp("bad.toml", "family = \"modern\"\ncl_max = -1\n");
+    let unknown_key = tmp("unknown.toml", "family = \"modern\"\ncl_maximum = 0.3\n");
+    let cases: [(Vec<&str>, &str); 6] = [
+        (
+            vec!["fit", "--input", bad_row.to_str().unwrap_or("")],
+            "line 3: launch_angle: 'twelve' is not a number",
+        ),
+        (
+            vec!["fit", "--input", no_carry.to_str().unwrap_or("")],
+            "no 'carry' column",
+        ),
+        (
+            vec![
+                "fit",
+                "--input",
+                bad_row.to_str().unwrap_or(""),
+                "--family",
+                "smooth",
+            ],
+            "unknown family 'smooth'",
+        ),
+        (
+            vec!["flight", "--aero", bad_model.to_str().unwrap_or("")],
+            "lift coefficient is out of range",
+        ),
+        (
+            vec!["flight", "--aero", unknown_key.to_str().unwrap_or("")],
+            "unknown key 'cl_maximum'",
+        ),
+        (
+            vec!["flight", "--aero", "nonsense"],
+            "neither a built-in model",
+        ),
+    ];
+    for (args, needle) in cases {
+        let (code, out, err) = run(&args);
+        assert_eq!(code, 2, "{args:?}: {err}");
+        assert!(out.is_empty());
+        assert_eq!(err.trim().lines().count(), 1, "{err}");
+        assert!(err.contains(needle), "{args:?}: {err}");
+    }
+}

@@ -1,0 +1,190 @@
+//! End-to-end tests of the ground options (issue 12): the outputs appear only with a
+//! ground, scene and ground files, batch columns, plots, and the bad-input paths (one
+//! stderr line, status 2).
+
+use assert_cmd::Command;
+use serde_json::Value;
+use std::path::PathBuf;
+
+fn run(args: &[&str]) -> (i32, String, String) {
+    let out = Command::cargo_bin("carry")
+        .expect("the carry binary is built")
+        .args(args)
+        .output()
+        .expect("carry runs");
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+fn json(args: &[&str]) -> Value {
+    let (code, out, err) = run(args);
+    assert_eq!(code, 0, "carry {args:?} failed: {err}");
+    serde_json::from_str(&out).expect("stdout is JSON")
+}
+
+fn temp_file(name: &str, contents: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("carry-ground-tests-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let path = dir.join(name);
+    std::fs::write(&path, contents).expect("temp file");
+    path
+}
+
+const KEYS: [&str; 6] = [
+    "total_m",
+    "roll_m",
+    "bounces",
+    "rest_position_m",
+    "time_to_rest_s",
+    "still_rolling",
+];
+
+#[test]
+fn ground_outputs_only_with_a_ground_and_carry_unchanged() {
+    let plain = json(&["flight", "--json"]);
+    let with = json(&["flight", "--json", "--ground", "fairway"]);
+    for k in KEYS {
+        assert!(plain["flight"].get(k).is_none(), "{k} without a ground");
+        assert!(with["flight"].get(k).is_some(), "{k} missing with a ground");
+    }
+    assert_eq!(plain["flight"]["carry_m"], with["flight"]["carry_m"]);
+    let total = with["flight"]["total_m"].as_f64().expect("total");
+    let carry = with["flight"]["carry_m"].as_f64().expect("carry");
+    let roll = with["flight"]["roll_m"].as_f64().expect("roll");
+    assert!(
+        (total - carry - roll).abs() < 1e-9,
+        "straight shot: total = carry + roll"
+    );
+    // CSV: the same keys as columns, only with a ground.
+    let (_, csv, _) = run(&["flight", "--csv"]);
+    assert!(!csv.contains("total_m"));
+    let (_, csv, _) = run(&["flight", "--csv", "--ground", "green", "--stimp", "11"]);
+    let header = csv.lines().next().expect("header");
+    assert!(header.ends_with(
+        "total_m,roll_m,bounces,rest_position_m_x,rest_position_m_y,rest_position_m_z,time_to_rest_s,still_rolling"
+    ));
+    let (_, table, _) = run(&["shot", "--ground", "rough"]);
+    assert!(table.contains("GROUND") && table.contains("total") && table.contains("bounces"));
+}
+
+#[test]
+fn scene_and_ground_files() {
+    let scene = temp_file("scene.toml", "ground = \"green\"\nstimp = 12\n");
+    let a = json(&["flight", "--json", "--scene", scene.to_str().expect("utf8")]);
+    let b = json(&["flight", "--json", "--ground", "green", "--stimp", "12"]);
+    assert_eq!(a["flight"]["total_m"], b["flight"]["total_m"]);
+    let table = temp_file(
+        "table.toml",
+        "[ground]\nsurface = \"fairway\"\nrolling_resistance = 0.2\nslope = 2\nslope_direction = 0\n",
+    );
+    let c = json(&["flight", "--json", "--scene", table.to_str().expect("utf8")]);
+    let file = temp_file(
+        "turf.toml",
+        "surface = \"fairway\"\nrolling_resistance = 0.2\nslope = 2\n",
+    );
+    let d = json(&["flight", "--json", "--ground", file.to_str().expect("utf8")]);
+    assert_eq!(c["flight"]["total_m"], d["flight"]["total_m"]);
+    let e = json(&[
+        "flight",
+        "--json",
+        "--ground",
+        "fairway",
+        "--rolling-resistance",
+        "0.2",
+        "--ground-slope",
+        "2",
+    ]);
+    assert_eq!(c["flight"]["total_m"], e["flight"]["total_m"]);
+    // Uphill and a slower turf roll less than the firm fairway.
+    let f = json(&["flight", "--json", "--ground", "fairway"]);
+    assert!(e["flight"]["roll_m"].as_f64() < f["flight"]["roll_m"].as_f64());
+}
+
+#[test]
+fn batch_has_ground_columns_when_the_input_names_a_ground() {
+    let input = temp_file(
+        "shots.csv",
+        "ground,ball_speed\nfairway,70\ngreen,60\nsand,60\n",
+    );
+    let (code, out, err) = run(&["batch", "flight", "--input", input.to_str().expect("utf8")]);
+    assert_eq!(code, 0, "{err}");
+    let lines: Vec<_> = out.lines().collect();
+    assert!(lines[0].contains("total_m,roll_m,bounces"));
+    assert_eq!(lines.len(), 4);
+    assert!(lines[3].contains("unknown surface 'sand'"), "{}", lines[3]);
+}
+
+#[test]
+fn bad_ground_input_is_one_line_and_status_2() {
+    let missing = temp_file("missing-dir", "");
+    let missing = missing.join("nope.toml");
+    for (args, needle) in [
+        (vec!["--ground", "sand"], "--ground: unknown surface"),
+        (
+            vec!["--ground-slope", "3"],
+            "--ground: the ground options need a surface",
+        ),
+        (
+            vec!["--ground", "rough", "--stimp", "10"],
+            "--stimp: applies to --ground green",
+        ),
+        (
+            vec!["--ground", "green", "--stimp", "40"],
+            "--stimp: is out of range",
+        ),
+        (
+            vec!["--ground", "fairway", "--ground-restitution", "1.5"],
+            "--ground-restitution",
+        ),
+        (
+            vec!["--ground", "fairway", "--ground-friction", "-1"],
+            "--ground-friction",
+        ),
+        (
+            vec!["--ground", "fairway", "--rolling-resistance", "NaN"],
+            "--rolling-resistance",
+        ),
+        (
+            vec!["--ground", "fairway", "--ground-slope", "50"],
+            "--ground-slope: is out of range",
+        ),
+        (
+            vec!["--ground", missing.to_str().expect("utf8")],
+            "--ground: cannot read",
+        ),
+    ] {
+        let mut all = vec!["flight"];
+        all.extend(args.iter());
+        let (code, _, err) = run(&all);
+        assert_eq!(code, 2, "{all:?}: {err}");
+        assert_eq!(err.lines().count(), 1, "{all:?}: {err}");
+        assert!(
+            err.starts_with(&format!("carry: {needle}")),
+            "{all:?}: {err}"
+        );
+    }
+}
+
+#[test]
+fn plot_draws_the_run_out() {
+    let out = temp_file("run.svg", "");
+    let (code, stdout, err) = run(&[
+        "plot",
+        "flight",
+        "--ground",
+        "fairway",
+        "--vary",
+        "launch_angle=9,12",
+        "--output",
+        out.to_str().expect("utf8"),
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(
+        stdout.contains("total") && stdout.contains("roll"),
+        "{stdout}"
+    );
+    assert!(std::fs::metadata(&out).expect("svg").len() > 1000);
+}

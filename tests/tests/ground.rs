@@ -1,0 +1,319 @@
+//! Bounce and roll after the landing (issue 12), through the public API: the published
+//! targets, the invariants as property tests, and the error paths.
+
+use carry_core::ground::{Ground, RunEnd, Surface, Turf};
+use carry_core::units::{deg, rpm};
+use carry_core::{Ball, BallMotion, Error, FlightOutcome, Integrator, Launch, Real, Scene, fly};
+use nalgebra::Vector3;
+use proptest::prelude::*;
+
+const MPH: f64 = 0.447_04;
+const YD: f64 = 0.9144;
+
+fn launch<T: Real>(
+    speed_mph: f64,
+    angle_deg: f64,
+    dir_deg: f64,
+    back: f64,
+    side: f64,
+) -> BallMotion<T> {
+    Launch {
+        ball_speed_mps: nalgebra::convert::<f64, T>(speed_mph * MPH),
+        launch_angle_rad: deg(nalgebra::convert(angle_deg)),
+        launch_direction_rad: deg(nalgebra::convert(dir_deg)),
+        backspin_radps: rpm(nalgebra::convert(back)),
+        sidespin_radps: rpm(nalgebra::convert(side)),
+    }
+    .ball_motion()
+    .expect("valid launch")
+}
+
+fn go<T: Real>(m: &BallMotion<T>, ground: Option<Ground<T>>) -> FlightOutcome<T> {
+    go_with(m, ground, carry_core::aero::AeroModel::default())
+}
+
+fn go_with<T: Real>(
+    m: &BallMotion<T>,
+    ground: Option<Ground<T>>,
+    aero: carry_core::aero::AeroModel<T>,
+) -> FlightOutcome<T> {
+    let scene = Scene {
+        ground,
+        aero,
+        ..Scene::default()
+    };
+    fly(&Ball::standard(), m, &scene, &Integrator::default(), None).expect("shot")
+}
+
+/// TrackMan PGA Tour 2023 averages (../shared/data/trackman_tour_2023.csv).
+fn tour_driver<T: Real>() -> BallMotion<T> {
+    launch(171.0, 10.4, 0.0, 2545.0, 0.0)
+}
+fn tour_pw<T: Real>() -> BallMotion<T> {
+    launch(104.0, 23.7, 0.0, 9316.0, 0.0)
+}
+
+fn roll_yd<T: Real>(m: &BallMotion<T>, ground: Ground<T>) -> (f64, FlightOutcome<T>) {
+    // The targets are stated for TrackMan's landings (the driver at 39°): the seed's
+    // aerodynamics land the tour driver there (38.9°); the calibrated model lands it
+    // steeper (docs/aero.md), which is an aerodynamic matter, not the ground's.
+    let out = go_with(m, Some(ground), carry_core::aero::AeroModel::quintavalla());
+    let roll = out.ground.expect("a ground gives a rollout").roll_m;
+    (carry_core::real::to_f64(roll) / YD, out)
+}
+
+/// The issue's targets, in f64 and f32: a tour driver landing near 38° on a firm fairway
+/// rolls 20–30 yd; a tour wedge landing near 52° with 7,000+ rpm on a green stops within a
+/// few yards (or spins back).
+fn targets<T: Real>() {
+    let (driver, out) = roll_yd(&tour_driver::<T>(), Ground::level(Surface::FairwayFirm));
+    let land = carry_core::real::to_f64(out.landing_angle_rad).to_degrees();
+    assert!((36.0..41.0).contains(&land), "driver lands at {land}°");
+    assert!((20.0..30.0).contains(&driver), "driver rolls {driver} yd");
+    let (wedge, out) = roll_yd(&tour_pw::<T>(), Ground::level(Surface::green()));
+    let land = carry_core::real::to_f64(out.landing_angle_rad).to_degrees();
+    let spin = carry_core::real::to_f64(out.landing_spin_radps) * 60.0 / std::f64::consts::TAU;
+    assert!(
+        land > 50.0 && spin > 7000.0,
+        "wedge lands at {land}°, {spin} rpm"
+    );
+    assert!((-5.0..3.0).contains(&wedge), "wedge rolls {wedge} yd");
+}
+
+#[test]
+fn published_targets_f64() {
+    targets::<f64>();
+}
+
+#[test]
+fn published_targets_f32() {
+    targets::<f32>();
+}
+
+#[test]
+fn carry_keeps_its_meaning() {
+    // The flight part of the outcome is bit-identical with and without a ground.
+    let m = tour_driver::<f64>();
+    let without = go(&m, None);
+    let with = go(&m, Some(Ground::level(Surface::FairwayFirm)));
+    assert!(without.ground.is_none());
+    assert_eq!(
+        FlightOutcome {
+            ground: None,
+            ..with
+        },
+        without
+    );
+    let g = with.ground.expect("rollout");
+    assert!(g.total_m > with.carry_m && g.time_to_rest_s > with.flight_time_s);
+    assert_eq!(g.end, RunEnd::Rest);
+}
+
+#[test]
+fn vertical_drop_without_spin_does_not_travel() {
+    for surface in [
+        Surface::FairwayFirm,
+        Surface::FairwaySoft,
+        Surface::Rough,
+        Surface::green(),
+    ] {
+        let scene = Scene {
+            launch_position_m: Vector3::new(3.0, 2.0, -1.0),
+            ground: Some(Ground::level(surface)),
+            ..Scene::default()
+        };
+        let m = BallMotion {
+            velocity_mps: Vector3::new(0.0, -3.0, 0.0),
+            spin_radps: Vector3::zeros(),
+        };
+        let out = fly(&Ball::standard(), &m, &scene, &Integrator::default(), None).expect("drop");
+        let g = out.ground.expect("rollout");
+        assert_eq!((g.rest_position_m.x, g.rest_position_m.z), (3.0, -1.0));
+        assert_eq!(g.roll_m, 0.0);
+        assert!(g.bounces >= 1, "a 2 m drop bounces");
+    }
+}
+
+#[test]
+fn steeper_than_the_resistance_rolls_to_the_time_cap() {
+    // A stimp-13 green (ρ ≈ 0.06) tilted 10° (tan = 0.18): it never stops.
+    let green = Surface::Green {
+        stimp_m: 13.0 * 0.3048,
+    };
+    let out = go(
+        &tour_pw::<f64>(),
+        Some(Ground::sloped(green, deg(10.0), deg(90.0))),
+    );
+    let g = out.ground.expect("rollout");
+    assert_eq!(g.end, RunEnd::StillRolling);
+    assert!(g.time_to_rest_s.is_finite() && g.rest_position_m.iter().all(|x| x.is_finite()));
+    // The same green at 2° holds the ball.
+    let out = go(
+        &tour_pw::<f64>(),
+        Some(Ground::sloped(green, deg(2.0), deg(90.0))),
+    );
+    assert_eq!(out.ground.expect("rollout").end, RunEnd::Rest);
+}
+
+#[test]
+fn absurd_surfaces_are_named_errors() {
+    let turf = |restitution, friction, rolling_resistance| Turf {
+        restitution,
+        friction,
+        rolling_resistance,
+        crater_scale: 1.0,
+    };
+    for (t, field) in [
+        (turf(1.01, 0.4, 0.1), carry_core::Field::GroundRestitution),
+        (turf(0.5, -0.4, 0.1), carry_core::Field::GroundFriction),
+        (
+            turf(0.5, 0.4, f64::NAN),
+            carry_core::Field::RollingResistance,
+        ),
+    ] {
+        let scene = Scene {
+            ground: Some(Ground::level(Surface::Custom(t))),
+            ..Scene::default()
+        };
+        let err = fly(
+            &Ball::standard(),
+            &tour_driver(),
+            &scene,
+            &Integrator::default(),
+            None,
+        );
+        assert!(
+            matches!(err, Err(Error::InvalidInput { field: f, .. }) if f == field),
+            "{err:?}"
+        );
+    }
+}
+
+#[test]
+fn the_recording_includes_bounces_and_roll() {
+    let mut buffer = heapless::Vec::<carry_core::Sample<f64>, 2048>::new();
+    let mut rec = carry_core::Recorder::new(0.02, &mut buffer).expect("recorder");
+    let scene = Scene {
+        ground: Some(Ground::level(Surface::FairwayFirm)),
+        ..Scene::default()
+    };
+    let out = fly(
+        &Ball::standard(),
+        &tour_driver(),
+        &scene,
+        &Integrator::default(),
+        Some(&mut rec),
+    )
+    .expect("shot");
+    let g = out.ground.expect("rollout");
+    let s = rec.samples();
+    let last = s.last().expect("samples");
+    assert_eq!(last.position_m, g.rest_position_m);
+    assert_eq!(last.time_s, g.time_to_rest_s);
+    let after: Vec<_> = s.iter().filter(|x| x.time_s > out.flight_time_s).collect();
+    assert!(after.iter().any(|x| x.position_m.y > 0.5), "a bounce rises");
+    assert!(
+        s.windows(2).all(|w| w[1].time_s >= w[0].time_s),
+        "time runs forward"
+    );
+    assert!(!rec.is_full());
+    // Recording changes nothing.
+    assert_eq!(
+        FlightOutcome {
+            recording_full: false,
+            ..out
+        },
+        go(&tour_driver(), Some(Ground::level(Surface::FairwayFirm)))
+    );
+}
+
+fn energy(v: &Vector3<f64>, w: &Vector3<f64>) -> f64 {
+    let ball = Ball::<f64>::standard();
+    0.5 * ball.mass_kg() * v.norm_squared() + 0.5 * ball.inertia_kgm2() * w.norm_squared()
+}
+
+fn surfaces() -> impl Strategy<Value = Surface<f64>> {
+    prop_oneof![
+        Just(Surface::FairwayFirm),
+        Just(Surface::FairwaySoft),
+        Just(Surface::Rough),
+        (2.0..4.5_f64).prop_map(|s| Surface::Green { stimp_m: s }),
+        (0.0..=1.0_f64, 0.0..2.0_f64, 0.0..1.0_f64, 0.0..3.0_f64).prop_map(|(e, mu, rho, k)| {
+            Surface::Custom(Turf {
+                restitution: e,
+                friction: mu,
+                rolling_resistance: rho,
+                crater_scale: k,
+            })
+        }),
+    ]
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(256))]
+
+    /// Kinetic energy (translation + rotation) never increases at a bounce.
+    #[test]
+    fn energy_never_increases_at_a_bounce(
+        surface in surfaces(),
+        slope in 0.0..40.0_f64, dir in -180.0..180.0_f64,
+        v in prop::array::uniform3(-60.0..60.0_f64),
+        w in prop::array::uniform3(-1200.0..1200.0_f64),
+    ) {
+        let ground = Ground::sloped(surface, deg(slope), deg(dir))
+            .prepare(Ball::<f64>::standard().radius_m())
+            .expect("valid ground");
+        let v = Vector3::from(v);
+        let w = Vector3::from(w);
+        // Only impacts: the ball moves into the ground.
+        prop_assume!(v.dot(&ground.normal()) < 0.0);
+        let r = ground.bounce(&v, &w).expect("finite");
+        let (before, after) = (energy(&v, &w), energy(&r.velocity_mps, &r.spin_radps));
+        prop_assert!(after <= before * (1.0 + 1e-12), "{before} → {after}");
+        // Off the ground, to rounding.
+        let out = r.velocity_mps.dot(&ground.normal());
+        prop_assert!(out >= -1e-12 * v.norm(), "rebounds off the ground: {out}");
+    }
+
+    /// Forward-rolling shots roll further on firmer ground (firm fairway > soft > rough).
+    #[test]
+    fn roll_increases_with_firmness(
+        speed in 120.0..175.0_f64, angle in 8.0..16.0_f64, spin in 1800.0..3500.0_f64,
+    ) {
+        let m = launch::<f64>(speed, angle, 0.0, spin, 0.0);
+        let roll = |s| roll_yd(&m, Ground::level(s)).0;
+        let (firm, soft, rough) = (roll(Surface::FairwayFirm), roll(Surface::FairwaySoft), roll(Surface::Rough));
+        prop_assert!(firm > soft && soft > rough, "{firm} {soft} {rough}");
+    }
+
+    /// Uphill rolls less: the roll decreases as the ground rises more steeply towards the
+    /// target.
+    #[test]
+    fn roll_decreases_uphill(
+        speed in 130.0..175.0_f64, spin in 1800.0..3500.0_f64,
+        a in 0.0..6.0_f64, more in 0.5..4.0_f64,
+    ) {
+        let m = launch::<f64>(speed, 11.0, 0.0, spin, 0.0);
+        let roll = |slope: f64| roll_yd(&m, Ground::sloped(Surface::FairwayFirm, deg(slope), 0.0)).0;
+        let (gentle, steep) = (roll(a), roll(a + more));
+        prop_assert!(steep < gentle, "{a}°: {gentle} yd, {}°: {steep} yd", a + more);
+    }
+
+    /// Left and right mirror: a mirrored shot on mirrored ground rests at the mirrored
+    /// point.
+    #[test]
+    fn mirror_symmetry(
+        speed in 80.0..175.0_f64, angle in 8.0..30.0_f64, dir in -6.0..6.0_f64,
+        back in 1500.0..9000.0_f64, side in -1500.0..1500.0_f64,
+        slope in 0.0..4.0_f64, sdir in -180.0..180.0_f64, surface in surfaces(),
+    ) {
+        let rest = |d: f64, s: f64, sd: f64| {
+            let out = go(&launch::<f64>(speed, angle, d, back, s), Some(Ground::sloped(surface, deg(slope), deg(sd))));
+            out.ground.expect("rollout").rest_position_m
+        };
+        let (a, b) = (rest(dir, side, sdir), rest(-dir, -side, -sdir));
+        let scale = 1.0 + a.x.abs();
+        prop_assert!((a.x - b.x).abs() <= 1e-6 * scale, "{a} vs {b}");
+        prop_assert!((a.z + b.z).abs() <= 1e-6 * scale, "{a} vs {b}");
+    }
+}
