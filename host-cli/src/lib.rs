@@ -13,6 +13,7 @@ pub mod compute;
 pub mod contact;
 pub mod error;
 pub mod fit;
+pub mod fit_contact;
 pub mod ground;
 pub mod params;
 pub mod plot;

@@ -151,3 +151,74 @@ fn the_fit_output_reads_back() {
     let named = json(&["impact", "--json", "--contact", "compliant"]);
     assert_eq!(from_file["launch"], named["launch"]);
 }
+
+fn club_delivery() -> String {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("../tests/data/club_delivery.csv")
+        .to_str()
+        .expect("utf-8")
+        .to_owned()
+}
+
+/// `carry fit --family compliant` fits, cross-validates and writes a file `--contact`
+/// reads; the mean targets hold for the fitted law.
+#[test]
+fn fit_compliant_family_round_trip() {
+    let data = club_delivery();
+    let out = std::env::temp_dir().join(format!("carry-contact-fit-{}.toml", std::process::id()));
+    let out_s = out.to_str().expect("utf-8");
+    let v = json(&[
+        "fit",
+        "--family",
+        "compliant",
+        "--input",
+        &data,
+        "--output",
+        out_s,
+        "--json",
+        "--no-progress",
+    ]);
+    assert_eq!(v["family"], "compliant");
+    assert_eq!(v["rows"], 11);
+    assert_eq!(v["fit"]["converged"], true);
+    let summary = |q: usize, k: &str| v["fit"]["summary"][q][k].as_f64().expect("number");
+    assert!(summary(0, "mean_abs_pct") <= 2.0);
+    assert!(summary(1, "mean_abs") <= 1.0);
+    assert!(summary(2, "mean_abs_pct") <= 10.0);
+    assert!(v["fit"]["loo_summary"].is_array());
+    let fitted = json(&["impact", "--json", "--club", "7iron", "--contact", out_s]);
+    let default = json(&["impact", "--json", "--club", "7iron"]);
+    assert_ne!(fitted["launch"], default["launch"]);
+    let _ = std::fs::remove_file(&out);
+}
+
+/// `--evaluate compliant` reports the default law without fitting: docs/impact.md's means.
+#[test]
+fn fit_compliant_family_evaluates_the_default() {
+    let v = json(&[
+        "fit",
+        "--family",
+        "compliant",
+        "--input",
+        &club_delivery(),
+        "--evaluate",
+        "compliant",
+        "--json",
+    ]);
+    let summary = |q: usize, k: &str| v["fit"]["summary"][q][k].as_f64().expect("number");
+    assert!((summary(0, "mean_abs_pct") - 1.37).abs() < 0.01);
+    assert!((summary(1, "mean_abs") - 0.57).abs() < 0.01);
+    assert!((summary(2, "mean_abs_pct") - 6.34).abs() < 0.01);
+    assert!(summary(2, "max_abs_pct") <= 20.0);
+    let (code, _, err) = run(&[
+        "fit",
+        "--family",
+        "compliant",
+        "--input",
+        &club_delivery(),
+        "--evaluate",
+        "rolling",
+    ]);
+    assert_eq!(code, 2);
+    assert!(err.starts_with("carry: --evaluate"), "{err}");
+}

@@ -128,12 +128,13 @@ pub fn read_rows(text: &str) -> Result<Vec<DeliveryRow>, String> {
         .collect()
 }
 
-/// The compliant law of the family's parameters `p` (in [`PARAMETERS`] order).
+/// The compliant law of the family's parameters `p` (in [`PARAMETERS`] order) with
+/// friction coefficient `friction`.
 #[must_use]
-pub fn law(p: &[f64]) -> ContactLaw<f64> {
+pub fn law(p: &[f64], friction: f64) -> ContactLaw<f64> {
     let at = |i: usize| p.get(i).copied().unwrap_or(f64::NAN);
     ContactLaw::Compliant(CompliantContact {
-        friction: FRICTION,
+        friction,
         tangential_restitution: at(0),
         tangential_restitution_slope: at(1),
         restitution_speed_slope_spm: at(2),
@@ -191,6 +192,33 @@ pub fn predict(row: &DeliveryRow, contact: ContactLaw<f64>) -> Result<[f64; 3], 
 pub struct ContactProblem {
     /// Where the fit starts (defaults to the presets' calibrated law).
     pub initial: Vec<f64>,
+    /// The friction coefficient held during the fit (default [`FRICTION`]).
+    pub friction: f64,
+}
+
+impl ContactProblem {
+    /// The family's parameters of a compliant `law` (its friction held), or `None` for the
+    /// rolling law, which is not in the family.
+    #[must_use]
+    pub fn of(law: &ContactLaw<f64>) -> Option<(Self, Vec<f64>)> {
+        match law {
+            ContactLaw::Rolling => None,
+            ContactLaw::Compliant(c) => {
+                let p = vec![
+                    c.tangential_restitution,
+                    c.tangential_restitution_slope,
+                    c.restitution_speed_slope_spm,
+                ];
+                Some((
+                    Self {
+                        initial: p.clone(),
+                        friction: c.friction,
+                    },
+                    p,
+                ))
+            }
+        }
+    }
 }
 
 impl Default for ContactProblem {
@@ -203,7 +231,10 @@ impl Default for ContactProblem {
             ],
             ContactLaw::Rolling => vec![0.0, 0.0, 0.0],
         };
-        Self { initial }
+        Self {
+            initial,
+            friction: FRICTION,
+        }
     }
 }
 
@@ -245,7 +276,7 @@ impl super::Problem for ContactProblem {
     }
 
     fn predict(&self, p: &[f64], r: &DeliveryRow) -> Result<Vec<f64>, String> {
-        predict(r, law(p)).map(Vec::from)
+        predict(r, law(p, self.friction)).map(Vec::from)
     }
 }
 
