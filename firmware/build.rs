@@ -159,13 +159,13 @@ fn impact(root: &Value, code: &mut String) {
             }
             (None, None) => panic!("impact case without expectation"),
         };
-        let hosts32: Vec<String> = cases::SOLVERS
+        let hosts32: Vec<String> = cases::VARIANTS
             .iter()
-            .map(|&(_, s)| host::<f32, IMPACT_OUTPUTS>(input.outputs(s), bits32))
+            .map(|&(_, s, c)| host::<f32, IMPACT_OUTPUTS>(input.outputs_with(s, c), bits32))
             .collect();
-        let hosts64: Vec<String> = cases::SOLVERS
+        let hosts64: Vec<String> = cases::VARIANTS
             .iter()
-            .map(|&(_, s)| host::<f64, IMPACT_OUTPUTS>(input.outputs(s), bits64))
+            .map(|&(_, s, c)| host::<f64, IMPACT_OUTPUTS>(input.outputs_with(s, c), bits64))
             .collect();
         writeln!(
             code,

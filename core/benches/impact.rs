@@ -1,4 +1,5 @@
-//! Impact solver costs: reduced 3×3 vs full 15×15 (each pivoting), f32 vs f64.
+//! Impact solver costs: reduced 3×3 vs full 15×15 (each pivoting), the reduced form with
+//! the compliant contact, f32 vs f64.
 //! `cargo bench -p carry-core --bench impact`
 use carry_core::impact::{self, Solver};
 use carry_core::linalg::Pivoting;
@@ -34,6 +35,23 @@ fn bench_precision<T: Real>(c: &mut Criterion, label: &str) {
                     black_box(&ball),
                     black_box(&strike),
                     solver,
+                )
+            })
+        });
+    }
+    // the same strike with the presets' calibrated compliant contact
+    let compliant = ClubSpec::<T> {
+        contact: carry_core::presets::FITTED_CONTACT.cast(),
+        ..ClubSpec::<T>::driver()
+    };
+    if let Ok(compliant) = compliant.validate() {
+        group.bench_function("reduced_compliant", |b| {
+            b.iter(|| {
+                impact::solve(
+                    black_box(&compliant),
+                    black_box(&ball),
+                    black_box(&strike),
+                    Solver::Reduced,
                 )
             })
         });

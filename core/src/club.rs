@@ -4,8 +4,9 @@
 //! E is C rotated by the static loft α about +z_C (`R_CE = Rz(α)`), x_E out of the face.
 
 use crate::error::{Error, Field, Reason, Result};
+pub use crate::impact::contact_law::ContactLaw;
+pub use crate::presets::{PRESETS, Preset, TypicalDelivery};
 use crate::real::{Real, lit};
-use crate::units::deg;
 use crate::validate::{
     finite, finite_matrix, finite_vector, in_range, positive, positive_or_infinite,
 };
@@ -31,123 +32,22 @@ pub struct ClubSpec<T: Real> {
     pub face_depth_radius_m: Option<T>,
     /// Vector from the CoM to the face centre, in the face frame E (m).
     pub cg_to_face_m: Vector3<T>,
-    /// Normal coefficient of restitution e, in [0, 1].
+    /// Normal coefficient of restitution e, in [0, 1] (the face's rating, at the COR test's
+    /// 48.77 m/s for a speed-dependent contact law).
     pub restitution: T,
-}
-
-/// A named, documented club preset.
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "defmt", derive(defmt::Format))]
-pub struct Preset {
-    /// Short name used on the command line.
-    pub name: &'static str,
-    /// What it is and where its numbers come from.
-    pub source: &'static str,
-    /// Mass (kg).
-    pub mass_kg: f64,
-    /// Principal inertias Ixx, Iyy, Izz in C (kg·m²).
-    pub inertia_kgm2: [f64; 3],
-    /// Static loft (degrees).
-    pub loft_deg: f64,
-    /// Roll radius (m); `f64::INFINITY` for flat.
-    pub roll_radius_m: f64,
-    /// Bulge radius (m); `f64::INFINITY` for flat.
-    pub bulge_radius_m: f64,
-    /// CoM → face centre along x_E (m).
-    pub cg_to_face_m: f64,
-    /// Coefficient of restitution.
-    pub restitution: f64,
-}
-
-/// The built-in club presets. The driver is the measured head of PHYSICS.md; the others
-/// are **estimates** (typical published head masses, lofts and MOI magnitudes), marked so.
-pub const PRESETS: [Preset; 5] = [
-    Preset {
-        name: "driver",
-        source: "Ping i15 driver head, measured (Petersen & McPhee); PHYSICS.md defaults",
-        mass_kg: 0.200,
-        inertia_kgm2: [3.0e-4, 4.2e-4, 2.2e-4],
-        loft_deg: 10.5,
-        roll_radius_m: 0.30,
-        bulge_radius_m: 0.30,
-        cg_to_face_m: 0.040,
-        restitution: 0.83,
-    },
-    Preset {
-        name: "3wood",
-        source: "estimate: typical 15° fairway wood (215 g, bulge/roll 0.28 m, shallower CG)",
-        mass_kg: 0.215,
-        inertia_kgm2: [1.9e-4, 2.8e-4, 1.5e-4],
-        loft_deg: 15.0,
-        roll_radius_m: 0.28,
-        bulge_radius_m: 0.28,
-        cg_to_face_m: 0.030,
-        restitution: 0.82,
-    },
-    Preset {
-        name: "7iron",
-        source: "estimate: typical cavity-back 7-iron (262 g, 34°, flat face); as golden case iron7_flat_face",
-        mass_kg: 0.262,
-        inertia_kgm2: [1.1e-4, 2.6e-4, 6.0e-5],
-        loft_deg: 34.0,
-        roll_radius_m: f64::INFINITY,
-        bulge_radius_m: f64::INFINITY,
-        cg_to_face_m: 0.008,
-        restitution: 0.80,
-    },
-    Preset {
-        name: "pw",
-        source: "estimate: typical pitching wedge (285 g, 46°, flat face)",
-        mass_kg: 0.285,
-        inertia_kgm2: [1.0e-4, 2.7e-4, 6.5e-5],
-        loft_deg: 46.0,
-        roll_radius_m: f64::INFINITY,
-        bulge_radius_m: f64::INFINITY,
-        cg_to_face_m: 0.007,
-        restitution: 0.78,
-    },
-    Preset {
-        name: "lw58",
-        source: "estimate: typical 58° lob wedge (295 g, flat face); as golden case wedge_58_slow",
-        mass_kg: 0.295,
-        inertia_kgm2: [1.0e-4, 2.8e-4, 7.0e-5],
-        loft_deg: 58.0,
-        roll_radius_m: f64::INFINITY,
-        bulge_radius_m: f64::INFINITY,
-        cg_to_face_m: 0.006,
-        restitution: 0.76,
-    },
-];
-
-impl Preset {
-    /// Looks a preset up by name.
-    #[must_use]
-    pub fn find(name: &str) -> Option<&'static Preset> {
-        PRESETS.iter().find(|p| p.name == name)
-    }
-
-    /// This preset's parameters in precision `T`.
-    #[must_use]
-    pub fn spec<T: Real>(&self) -> ClubSpec<T> {
-        let [ixx, iyy, izz] = self.inertia_kgm2;
-        ClubSpec {
-            mass_kg: lit(self.mass_kg),
-            inertia_kgm2: Matrix3::from_diagonal(&Vector3::new(lit(ixx), lit(iyy), lit(izz))),
-            loft_rad: deg(lit(self.loft_deg)),
-            roll_radius_m: lit(self.roll_radius_m),
-            bulge_radius_m: lit(self.bulge_radius_m),
-            face_depth_radius_m: None,
-            cg_to_face_m: Vector3::new(lit(self.cg_to_face_m), T::zero(), T::zero()),
-            restitution: lit(self.restitution),
-        }
-    }
+    /// The face–ball contact law ([`ContactLaw::Rolling`] is the seed's).
+    pub contact: ContactLaw<T>,
 }
 
 impl<T: Real> ClubSpec<T> {
-    /// The driver of PHYSICS.md (measured Ping i15 head).
+    /// The driver of PHYSICS.md (measured Ping i15 head) with the seed's rolling contact:
+    /// the model the golden files pin. (The `driver` preset, [`PRESETS`]`[0]`, has the same
+    /// head with the calibrated contact.)
     #[must_use]
     pub fn driver() -> Self {
-        PRESETS[0].spec()
+        let mut spec = PRESETS[0].spec();
+        spec.contact = ContactLaw::Rolling;
+        spec
     }
 
     /// Validates every parameter and precomputes what the solvers need.
@@ -182,6 +82,7 @@ impl<T: Real> ClubSpec<T> {
         let cg_to_face_m = finite_vector(&self.cg_to_face_m, Field::CgToFace)?;
         let restitution = in_range(self.restitution, T::zero(), T::one(), Field::Restitution)?;
         finite(restitution, Field::Restitution)?;
+        let contact = self.contact.validate()?;
         Ok(ClubHead {
             mass_kg,
             inertia_kgm2: inertia,
@@ -191,6 +92,7 @@ impl<T: Real> ClubSpec<T> {
             face,
             cg_to_face_m,
             restitution,
+            contact,
         })
     }
 }
@@ -291,6 +193,7 @@ pub struct ClubHead<T: Real> {
     face: FaceShape<T>,
     cg_to_face_m: Vector3<T>,
     restitution: T,
+    contact: ContactLaw<T>,
 }
 
 impl<T: Real> ClubHead<T> {
@@ -333,6 +236,11 @@ impl<T: Real> ClubHead<T> {
     #[must_use]
     pub fn restitution(&self) -> T {
         self.restitution
+    }
+    /// The face–ball contact law.
+    #[must_use]
+    pub fn contact_law(&self) -> &ContactLaw<T> {
+        &self.contact
     }
 }
 

@@ -27,6 +27,17 @@ pub enum Field {
     CgToFace,
     /// Coefficient of restitution e.
     Restitution,
+    // --- contact law (impact::contact_law) ---
+    /// The face–ball contact law as a whole (e.g. a solver that does not support it).
+    ContactLaw,
+    /// Coulomb friction coefficient μ of the face–ball contact.
+    Friction,
+    /// Tangential restitution e_t at normal incidence.
+    TangentialRestitution,
+    /// Change of the tangential restitution per unit tan(impact obliquity).
+    TangentialRestitutionSlope,
+    /// Fall of the normal restitution per m/s of normal impact speed (s/m).
+    RestitutionSpeedSlope,
     // --- ball ---
     /// Ball mass (kg).
     BallMass,
@@ -144,6 +155,9 @@ pub enum Reason {
     NotPositiveDefinite,
     /// A rotation matrix that is not orthonormal with determinant +1.
     NotRotation,
+    /// A valid choice the requested solver does not implement (the full 15×15 impact
+    /// solver supports only the seed's rolling contact).
+    UnsupportedBySolver,
 }
 
 /// Everything that can go wrong in the core.
@@ -206,6 +220,11 @@ impl Field {
             Self::FaceDepthRadius => "face depth radius",
             Self::CgToFace => "CG-to-face offset",
             Self::Restitution => "coefficient of restitution",
+            Self::ContactLaw => "contact law",
+            Self::Friction => "friction coefficient",
+            Self::TangentialRestitution => "tangential restitution",
+            Self::TangentialRestitutionSlope => "tangential restitution slope",
+            Self::RestitutionSpeedSlope => "restitution speed slope",
             Self::BallMass => "ball mass",
             Self::BallRadius => "ball radius",
             Self::ClubSpeed => "club speed",
@@ -271,6 +290,9 @@ impl fmt::Display for Reason {
             Self::NotSymmetric => "is not symmetric",
             Self::NotPositiveDefinite => "is not positive definite",
             Self::NotRotation => "is not a proper rotation",
+            Self::UnsupportedBySolver => {
+                "is not supported by the full 15×15 solver (use the reduced solver)"
+            }
         })
     }
 }

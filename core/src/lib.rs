@@ -32,6 +32,7 @@ pub mod geometry;
 pub mod impact;
 pub mod launch;
 pub mod linalg;
+pub mod presets;
 pub mod real;
 pub mod shot;
 pub mod units;
@@ -53,7 +54,7 @@ pub use wind::Wind;
 // --- end flight ---
 
 pub use ball::{Ball, BallMotion};
-pub use club::{ClubHead, ClubSpec, PRESETS, Preset};
+pub use club::{ClubHead, ClubSpec, ContactLaw, PRESETS, Preset};
 pub use delivery::{ClubMotion, Delivery, FaceLocation, Strike};
 pub use error::{Error, Field, Reason, Result};
 pub use impact::{ImpactOutcome, Solver};

@@ -170,34 +170,69 @@ fn equilibrate_rows<T: Real, const N: usize>(cols: &mut [T], x: &mut [T]) -> Res
 /// # Errors
 /// [`Error::Singular`] when a pivot `d_i ≤ 3ε·max|K|` (not numerically positive definite).
 pub fn solve_spd3<T: Real>(k: &Matrix3<T>, b: &Vector3<T>) -> Result<Vector3<T>> {
-    let tiny = lit::<T>(3.0) * T::default_epsilon() * k.amax();
-    let d0 = k.m11;
-    if !(d0 > tiny) {
-        return Err(Error::Singular);
+    Ldl3::factor(k)?.solve(b)
+}
+
+/// The LDLᵀ factors of a symmetric positive definite 3×3 matrix: factor once, solve for
+/// several right-hand sides (the compliant contact law solves two).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Ldl3<T> {
+    d: [T; 3],
+    l10: T,
+    l20: T,
+    l21: T,
+}
+
+impl<T: Real> Ldl3<T> {
+    /// Factors `k` (its lower triangle is read).
+    ///
+    /// # Errors
+    /// [`Error::Singular`] when a pivot falls below `3ε·max|k|`.
+    pub fn factor(k: &Matrix3<T>) -> Result<Self> {
+        let tiny = lit::<T>(3.0) * T::default_epsilon() * k.amax();
+        let d0 = k.m11;
+        if !(d0 > tiny) {
+            return Err(Error::Singular);
+        }
+        let l10 = k.m21 / d0;
+        let l20 = k.m31 / d0;
+        let d1 = k.m22 - l10 * l10 * d0;
+        if !(d1 > tiny) {
+            return Err(Error::Singular);
+        }
+        let l21 = (k.m32 - l20 * l10 * d0) / d1;
+        let d2 = k.m33 - l20 * l20 * d0 - l21 * l21 * d1;
+        if !(d2 > tiny) {
+            return Err(Error::Singular);
+        }
+        Ok(Self {
+            d: [d0, d1, d2],
+            l10,
+            l20,
+            l21,
+        })
     }
-    let l10 = k.m21 / d0;
-    let l20 = k.m31 / d0;
-    let d1 = k.m22 - l10 * l10 * d0;
-    if !(d1 > tiny) {
-        return Err(Error::Singular);
-    }
-    let l21 = (k.m32 - l20 * l10 * d0) / d1;
-    let d2 = k.m33 - l20 * l20 * d0 - l21 * l21 * d1;
-    if !(d2 > tiny) {
-        return Err(Error::Singular);
-    }
-    // forward: L y = b, diagonal: z = y / d, back: Lᵀ x = z
-    let y0 = b.x;
-    let y1 = b.y - l10 * y0;
-    let y2 = b.z - l20 * y0 - l21 * y1;
-    let x2 = y2 / d2;
-    let x1 = y1 / d1 - l21 * x2;
-    let x0 = y0 / d0 - l10 * x1 - l20 * x2;
-    let x = Vector3::new(x0, x1, x2);
-    if x.iter().all(|v| v.is_finite()) {
-        Ok(x)
-    } else {
-        Err(Error::Singular)
+
+    /// Solves `K x = b`.
+    ///
+    /// # Errors
+    /// [`Error::Singular`] when the solution is not finite.
+    pub fn solve(&self, b: &Vector3<T>) -> Result<Vector3<T>> {
+        let [d0, d1, d2] = self.d;
+        let (l10, l20, l21) = (self.l10, self.l20, self.l21);
+        // forward: L y = b, diagonal: z = y / d, back: Lᵀ x = z
+        let y0 = b.x;
+        let y1 = b.y - l10 * y0;
+        let y2 = b.z - l20 * y0 - l21 * y1;
+        let x2 = y2 / d2;
+        let x1 = y1 / d1 - l21 * x2;
+        let x0 = y0 / d0 - l10 * x1 - l20 * x2;
+        let x = Vector3::new(x0, x1, x2);
+        if x.iter().all(|v| v.is_finite()) {
+            Ok(x)
+        } else {
+            Err(Error::Singular)
+        }
     }
 }
 

@@ -10,7 +10,8 @@
 use carry_core::aero::AeroModel;
 use carry_core::air::{Air, Pressure, Weather};
 use carry_core::flight::{self, Integrator};
-use carry_core::impact::{self, Solver};
+use carry_core::impact::{self, ContactLaw, Solver};
+use carry_core::presets::FITTED_CONTACT;
 use carry_core::real::{Real, lit};
 use carry_core::scene::{Effects, Scene};
 use carry_core::units::{deg, rpm};
@@ -166,6 +167,7 @@ impl ImpactInput {
             face_depth_radius_m: self.face_depth_radius_m.map(lit),
             cg_to_face_m: v3(self.cg_to_face_m),
             restitution: lit(self.cor),
+            contact: ContactLaw::Rolling,
         }
     }
 
@@ -193,7 +195,24 @@ impl ImpactInput {
     /// # Errors
     /// The core's error for an invalid or impossible case.
     pub fn solve<T: Real>(&self, solver: Solver) -> Result<impact::ImpactOutcome<T>, Error> {
-        let club = self.club::<T>().validate()?;
+        self.solve_with(solver, false)
+    }
+
+    /// [`Self::solve`] with the seed's rolling contact, or (`compliant`) the calibrated
+    /// compliant contact of the presets.
+    ///
+    /// # Errors
+    /// As [`Self::solve`].
+    pub fn solve_with<T: Real>(
+        &self,
+        solver: Solver,
+        compliant: bool,
+    ) -> Result<impact::ImpactOutcome<T>, Error> {
+        let mut spec = self.club::<T>();
+        if compliant {
+            spec.contact = FITTED_CONTACT.cast();
+        }
+        let club = spec.validate()?;
         let ball = Ball::new(lit(self.ball_mass_kg), lit(self.ball_radius_m))?;
         let strike = self.delivery::<T>().strike(&club)?;
         impact::solve(&club, &ball, &strike, solver)
@@ -204,7 +223,19 @@ impl ImpactInput {
     /// # Errors
     /// As [`Self::solve`].
     pub fn outputs<T: Real>(&self, solver: Solver) -> Result<[T; IMPACT_OUTPUTS], Error> {
-        let o = self.solve::<T>(solver)?;
+        self.outputs_with(solver, false)
+    }
+
+    /// [`Self::solve_with`], flattened.
+    ///
+    /// # Errors
+    /// As [`Self::solve`].
+    pub fn outputs_with<T: Real>(
+        &self,
+        solver: Solver,
+        compliant: bool,
+    ) -> Result<[T; IMPACT_OUTPUTS], Error> {
+        let o = self.solve_with::<T>(solver, compliant)?;
         let l = &o.launch;
         let vs = [
             o.ball.velocity_mps,
@@ -367,3 +398,12 @@ pub fn integrators<T: Real>() -> [(&'static str, Integrator<T>); 3] {
 
 /// The solvers the on-target suite runs every impact case with.
 pub const SOLVERS: [(&str, Solver); 2] = [("reduced", Solver::Reduced), ("full", Solver::FULL)];
+
+/// The impact variants compared bit for bit with the host: both solvers with the seed's
+/// rolling contact (what the golden values pin), and the reduced solver with the
+/// calibrated compliant contact (`compliant = true`).
+pub const VARIANTS: [(&str, Solver, bool); 3] = [
+    ("reduced", Solver::Reduced, false),
+    ("full", Solver::FULL, false),
+    ("compliant", Solver::Reduced, true),
+];

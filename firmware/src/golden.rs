@@ -22,7 +22,7 @@ pub enum Host<const N: usize> {
 }
 
 /// One impact case: input, reference (ball velocity and spin, SI) and host results per
-/// solver ([`crate::cases::SOLVERS`] order).
+/// variant ([`crate::cases::VARIANTS`] order).
 #[derive(Debug, Clone, Copy)]
 pub struct ImpactCase {
     /// Case name.
@@ -31,10 +31,10 @@ pub struct ImpactCase {
     pub input: ImpactInput,
     /// Reference: ball velocity (3) and ball spin (3), or the error.
     pub expected: Expected<6>,
-    /// Host results in f32, per solver.
-    pub host_f32: [Host<IMPACT_OUTPUTS>; 2],
-    /// Host results in f64, per solver.
-    pub host_f64: [Host<IMPACT_OUTPUTS>; 2],
+    /// Host results in f32, per variant.
+    pub host_f32: [Host<IMPACT_OUTPUTS>; 3],
+    /// Host results in f64, per variant.
+    pub host_f64: [Host<IMPACT_OUTPUTS>; 3],
 }
 
 /// One flight case: input, reference (carry, side, flight time, apex) and host results

@@ -4,7 +4,8 @@
 //! whose launch the flight golden file flies as `reference_driver_impact`.
 
 use carry_core::flight::{self, FlightOutcome, Integrator};
-use carry_core::impact::{self, ImpactOutcome, Solver};
+use carry_core::impact::{self, ContactLaw, ImpactOutcome, Solver};
+use carry_core::presets::FITTED_CONTACT;
 use carry_core::real::{Real, lit};
 use carry_core::scene::Scene;
 use carry_core::units::deg;
@@ -38,6 +39,16 @@ pub fn driver<T: Real>() -> ClubSpec<T> {
         face_depth_radius_m: Some(lit(0.3)),
         cg_to_face_m: Vector3::new(lit(0.04), T::zero(), T::zero()),
         restitution: lit(0.83),
+        contact: ContactLaw::Rolling,
+    }
+}
+
+/// The same head with the presets' calibrated compliant contact.
+#[must_use]
+pub fn driver_compliant<T: Real>() -> ClubSpec<T> {
+    ClubSpec {
+        contact: FITTED_CONTACT.cast(),
+        ..driver()
     }
 }
 

@@ -17,7 +17,7 @@
 use carry_firmware as _;
 
 use carry_core::Real;
-use carry_firmware::cases::{self, FLIGHT_NAMES, IMPACT_NAMES, SOLVERS};
+use carry_firmware::cases::{self, FLIGHT_NAMES, IMPACT_NAMES, SOLVERS, VARIANTS};
 use carry_firmware::golden::{Expected, FLIGHT, GROUND, Host, IMPACT};
 use carry_firmware::ground_cases::{GROUND_CASES, GROUND_NAMES};
 
@@ -85,13 +85,13 @@ fn identical<T: Precision, const N: usize>(
 }
 
 fn impact_bit_identity<T: Precision>(
-    host: impl Fn(&carry_firmware::golden::ImpactCase) -> &[Host<23>; 2],
+    host: impl Fn(&carry_firmware::golden::ImpactCase) -> &[Host<23>; 3],
 ) {
     let mut compared = 0u32;
     let mut differ = 0u32;
     for case in IMPACT {
-        for (k, (sname, solver)) in SOLVERS.iter().enumerate() {
-            let target = case.input.outputs::<T>(*solver);
+        for (k, (sname, solver, compliant)) in VARIANTS.iter().enumerate() {
+            let target = case.input.outputs_with::<T>(*solver, *compliant);
             compared += 1;
             if !identical(case.name, sname, &IMPACT_NAMES, &target, &host(case)[k]) {
                 differ += 1;

@@ -1,8 +1,9 @@
 //! Fuzz the impact entry points: club validation, ball, delivery → strike or a strike given
-//! directly, and both solvers (every pivoting) in f32 and f64. A success must be finite.
+//! directly, both solvers (every pivoting) and both contact laws (the compliant one with
+//! any parameters, valid or not) in f32 and f64. A success must be finite.
 #![no_main]
 
-use carry_core::impact::{self, Solver};
+use carry_core::impact::{self, CompliantContact, ContactLaw, Solver};
 use carry_core::linalg::Pivoting;
 use carry_core::real::lit;
 use carry_core::{
@@ -36,7 +37,36 @@ fn run<T: Real>(b: &mut Bytes<'_>) -> Result<()> {
         },
         cg_to_face_m: v(b.vec3(-0.05, 0.06)),
         restitution: lit(b.param(0.0, 1.0)),
+        contact: if b.flag() {
+            ContactLaw::Rolling
+        } else {
+            // out-of-range values included: validation must name them
+            let friction = match b.byte() % 4 {
+                0 => 0.0,
+                1 => f64::INFINITY,
+                2 => b.param(-0.1, 1e6),
+                _ => b.param(0.0, 2.0),
+            };
+            ContactLaw::Compliant(CompliantContact {
+                friction: lit(friction),
+                tangential_restitution: lit(b.param(-1.1, 1.1)),
+                tangential_restitution_slope: lit(b.param(-5.0, 5.0)),
+                restitution_speed_slope_spm: lit(b.param(-0.01, 0.05)),
+            })
+        },
     };
+    if let ContactLaw::Compliant(law) = spec.contact {
+        // the law's impulse on its own, with an arbitrary (usually not SPD) matrix and
+        // arbitrary velocities: a typed error or a finite impulse, never a panic
+        if b.flag() {
+            let k = Matrix3::from_fn(|_, _| lit::<T>(b.param(-100.0, 100.0)));
+            let u0 = v::<T>(b.vec3(-80.0, 80.0));
+            let n = v::<T>(b.vec3(-1.0, 1.0));
+            if let Ok((p, _)) = law.impulse(&k, &u0, &n, lit(b.param(0.0, 1.0))) {
+                assert!(p.iter().all(|x| x.is_finite()), "non-finite impulse {p:?}");
+            }
+        }
+    }
     let ball = Ball::<T>::new(lit(b.param(0.01, 0.1)), lit(b.param(0.01, 0.05)))?;
     let direct = b.flag();
     let club = spec.validate()?;

@@ -8,6 +8,7 @@ use crate::params::{
 };
 use crate::units::Units;
 use carry_core::Preset;
+use carry_core::impact::ContactLaw;
 use clap::{Args, Parser, Subcommand};
 use std::path::PathBuf;
 
@@ -94,15 +95,18 @@ fn tensor(s: &str) -> Result<[f64; 9], String> {
 fn preset(s: &str) -> Result<&'static Preset, String> {
     parse_preset(s)
 }
+fn contact(s: &str) -> Result<ContactLaw<f64>, String> {
+    crate::contact::parse(s)
+}
 
 /// Club delivery options.
 #[derive(Debug, Clone, Args)]
 #[command(next_help_heading = "Delivery")]
 pub struct DeliveryArgs {
-    /// Club head speed [m/s | mph] (default 45 m/s).
+    /// Club head speed [m/s | mph] (default 45 m/s, or the named club's typical tour speed).
     #[arg(long, value_name = "SPEED", value_parser = finite, allow_hyphen_values = true)]
     pub club_speed: Option<f64>,
-    /// Attack angle [deg, + up] (default 0).
+    /// Attack angle [deg, + up] (default 0, or the named club's typical).
     #[arg(long, value_name = "DEG", value_parser = finite, allow_hyphen_values = true)]
     pub attack_angle: Option<f64>,
     /// Club path [deg, + right: in-to-out] (default 0).
@@ -111,7 +115,8 @@ pub struct DeliveryArgs {
     /// Face angle [deg, + open: pointing right] (default 0).
     #[arg(long, value_name = "DEG", value_parser = finite, allow_hyphen_values = true)]
     pub face_angle: Option<f64>,
-    /// Dynamic loft [deg] (default: the club's static loft).
+    /// Dynamic loft [deg]: the club's orientation (default: the static loft, or the named
+    /// club's typical, TrackMan's at the contact point).
     #[arg(long, value_name = "DEG", value_parser = finite, allow_hyphen_values = true)]
     pub dynamic_loft: Option<f64>,
     /// Lie / face tilt [deg, + toe up] (default 0).
@@ -120,7 +125,8 @@ pub struct DeliveryArgs {
     /// Club angular velocity before impact [rad/s, G] (default 0,0,0).
     #[arg(long, value_name = "X,Y,Z", value_parser = vec3, allow_hyphen_values = true)]
     pub club_spin: Option<[f64; 3]>,
-    /// Impact point up the face from its centre [m | in] (default 0).
+    /// Impact point up the face from its centre [m | in] (default 0, or the named club's
+    /// typical: drivers 4 mm above centre, irons where a ball on turf meets the face).
     #[arg(long, value_name = "LEN", value_parser = finite, allow_hyphen_values = true)]
     pub impact_height: Option<f64>,
     /// Impact point toward the toe from the face centre [m | in] (default 0; − = heel).
@@ -135,9 +141,19 @@ pub struct DeliveryArgs {
 #[derive(Debug, Clone, Args)]
 #[command(next_help_heading = "Club and ball")]
 pub struct ClubArgs {
-    /// Club preset (driver, 3wood, 7iron, pw, lw58; see `carry clubs`).
+    /// Club preset: driver, 3wood, hybrid, 4iron … 9iron, pw, gw, sw, lw (lw58); see
+    /// `carry clubs`. A named club's typical tour delivery (club speed, attack angle, dynamic
+    /// loft, impact height) fills in the ones not given.
     #[arg(long, value_name = "PRESET", value_parser = preset)]
     pub club: Option<&'static Preset>,
+    /// Face–ball contact law: `compliant` (default: friction-limited, tangential
+    /// restitution, COR falling with speed; calibrated on TrackMan data), `rolling` (the
+    /// seed's rigid contact, rolling without slipping; what the golden files pin), or a
+    /// FILE.toml with its parameters (friction, tangential_restitution,
+    /// tangential_restitution_slope, restitution_speed_slope_spm; as `carry fit` writes).
+    /// The full solver supports only `rolling`.
+    #[arg(long, value_name = "NAME|FILE.toml", value_parser = contact)]
+    pub contact: Option<ContactLaw<f64>>,
     /// Club head mass [kg].
     #[arg(long, value_name = "KG", value_parser = finite, allow_hyphen_values = true)]
     pub club_mass: Option<f64>,
@@ -546,6 +562,9 @@ impl DeliveryArgs {
 impl ClubArgs {
     /// Applies the given options (the preset first, then the overrides).
     pub fn apply(&self, p: &mut Params, u: Units) {
+        if let Some(law) = self.contact {
+            Key::Contact.set(p, u, Value::Contact(law));
+        }
         if let Some(preset) = self.club {
             Key::Club.set(p, u, Value::Preset(preset));
         }

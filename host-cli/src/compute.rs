@@ -2,10 +2,11 @@
 //! [`Report`] in `f64`. The same generic code serves `--precision f32` and `f64`.
 
 use crate::error::InputError;
-use crate::params::{ClubParams, DEFAULT_BACKSPIN_RPM, DeliveryParams, Params};
+use crate::params::{ClubParams, DEFAULT_BACKSPIN_RPM, Params};
 use crate::report::{ClubAfter, FlightReport, GroundReport, LaunchReport, Report};
 use carry_core::flight::{Integrator, Recorder, Sample};
 use carry_core::impact::{self, Solver};
+use carry_core::presets::roll_tilt_rad;
 use carry_core::real::{lit, to_f64};
 use carry_core::units::{deg, rpm, to_deg, to_rpm};
 use carry_core::{
@@ -170,7 +171,58 @@ pub fn club_spec<T: Real>(c: &ClubParams) -> ClubSpec<T> {
     if let Some(e) = c.cor {
         spec.restitution = lit(e);
     }
+    if let Some(law) = c.contact {
+        spec.contact = law.cast();
+    }
     spec
+}
+
+/// The typical delivery of the named club, if the user named one.
+fn typical(p: &Params) -> Option<&'static carry_core::presets::TypicalDelivery> {
+    p.club.named.then_some(&p.club.preset.typical)
+}
+
+/// Club speed (m/s): given, else the named club's typical (tour) speed, else the default.
+#[must_use]
+pub fn club_speed_mps(p: &Params) -> f64 {
+    match typical(p) {
+        Some(t) if !p.delivery.club_speed_given => t.club_speed_mps,
+        _ => p.delivery.club_speed_mps,
+    }
+}
+
+/// Impact height up the face (m): given, else the named club's typical strike, else 0.
+#[must_use]
+pub fn impact_height_m(p: &Params) -> f64 {
+    p.delivery
+        .impact_height_m
+        .or_else(|| typical(p).map(|t| t.impact_height_m))
+        .unwrap_or(0.0)
+}
+
+/// Attack angle (deg): given, else the named club's typical one, else 0.
+#[must_use]
+pub fn attack_angle_deg(p: &Params) -> f64 {
+    p.delivery
+        .attack_angle_deg
+        .or_else(|| typical(p).map(|t| t.attack_angle_deg))
+        .unwrap_or(0.0)
+}
+
+/// The club's dynamic loft (rad): given, else the named club's typical one (TrackMan's,
+/// at the contact point: the club turns by the face normal's tilt there less), else the
+/// static loft.
+fn dynamic_loft_rad<T: Real>(p: &Params, head: &ClubHead<T>) -> T {
+    if let Some(a) = p.delivery.dynamic_loft_deg {
+        return deg(lit(a));
+    }
+    match typical(p) {
+        Some(t) => {
+            let h = lit::<T>(impact_height_m(p));
+            deg(lit::<T>(t.dynamic_loft_deg)) - roll_tilt_rad(head.face(), h)
+        }
+        None => head.loft_rad(),
+    }
 }
 
 /// The ball of `p`, validated.
@@ -181,19 +233,21 @@ pub fn ball<T: Real>(p: &Params) -> Result<Ball<T>, InputError> {
     Ball::new(lit(p.ball_mass_kg), lit(p.ball_radius_m)).map_err(InputError::from)
 }
 
-/// The core delivery of `d` (degrees → radians; dynamic loft defaults to the static loft).
+/// The core delivery of `p` for `head` (degrees → radians; what is not given comes from
+/// the named club's typical delivery, else the reference delivery).
 #[must_use]
-pub fn delivery<T: Real>(d: &DeliveryParams, head: &ClubHead<T>) -> Delivery<T> {
+pub fn delivery<T: Real>(p: &Params, head: &ClubHead<T>) -> Delivery<T> {
+    let d = &p.delivery;
     Delivery {
-        club_speed_mps: lit(d.club_speed_mps),
-        attack_angle_rad: deg(lit(d.attack_angle_deg)),
+        club_speed_mps: lit(club_speed_mps(p)),
+        attack_angle_rad: deg(lit(attack_angle_deg(p))),
         club_path_rad: deg(lit(d.club_path_deg)),
         face_angle_rad: deg(lit(d.face_angle_deg)),
-        dynamic_loft_rad: d.dynamic_loft_deg.map_or(head.loft_rad(), |a| deg(lit(a))),
+        dynamic_loft_rad: dynamic_loft_rad(p, head),
         lie_rad: deg(lit(d.lie_deg)),
         club_spin_radps: v3(d.club_spin_radps),
         location: FaceLocation {
-            height_m: lit(d.impact_height_m),
+            height_m: lit(impact_height_m(p)),
             toe_m: lit(d.impact_toe_m),
         },
     }
@@ -207,11 +261,11 @@ fn solve_impact<T: Real>(
 ) -> Result<carry_core::ImpactOutcome<T>, InputError> {
     let head = club::<T>(&p.club)?;
     let d = &p.delivery;
-    let delivery = delivery::<T>(d, &head);
+    let delivery = delivery::<T>(p, &head);
     let strike = delivery.strike(&head)?;
     impact::solve(&head, ball, &strike, n.solver()).map_err(|e| {
         if e == carry_core::Error::NoApproach
-            && d.club_speed_mps == 0.0
+            && club_speed_mps(p) == 0.0
             && d.club_spin_radps == [0.0; 3]
         {
             InputError::new(

@@ -107,6 +107,11 @@ pub fn field_key(field: Field) -> &'static str {
         Field::CraterScale => "crater_scale",
         Field::Stimp => "stimp",
         Field::GroundNormal => "ground_slope",
+        Field::ContactLaw => "contact, solver",
+        Field::Friction
+        | Field::TangentialRestitution
+        | Field::TangentialRestitutionSlope
+        | Field::RestitutionSpeedSlope => "contact",
         // LaunchPosition and Gravity are not options of the CLI (fixed tee, standard g),
         // nor is any field added to the core later.
         _ => "precision",
@@ -127,6 +132,13 @@ impl From<Error> for InputError {
                     Field::GroundFriction | Field::RollingResistance | Field::CraterScale => {
                         format!("{reason} (0 to 10)")
                     }
+                    Field::ContactLaw => {
+                        "the full 15×15 solver supports only --contact rolling".to_owned()
+                    }
+                    Field::Friction
+                    | Field::TangentialRestitution
+                    | Field::TangentialRestitutionSlope
+                    | Field::RestitutionSpeedSlope => format!("{} {reason}", field.name()),
                     Field::Pressure => {
                         format!(
                             "{reason} (or below the vapour pressure at this temperature and humidity)"

@@ -38,7 +38,10 @@ pub struct FitCmd {
     #[arg(long, value_name = "FILE.csv")]
     pub input: PathBuf,
     /// Model family to fit: `modern` (drag crisis, saturating lift, Smits & Smith spin
-    /// decay; 7 coefficients) or `quintavalla` (the seed's linear family, 5 coefficients).
+    /// decay; 7 coefficients) or `quintavalla` (the seed's linear family, 5 coefficients);
+    /// `compliant`: the face–ball contact law on delivery → launch rows (club,
+    /// club_speed_mph, attack_deg, dynamic_loft_deg, ball_speed_mph, launch_deg, spin_rpm,
+    /// as ../shared/data/club_delivery.csv; writes a `--contact` file).
     #[arg(long, default_value = "modern", value_name = "FAMILY")]
     pub family: String,
     /// Write the fitted model here (TOML; use it with `--aero FILE.toml`).
@@ -424,6 +427,9 @@ impl FitCmd {
 /// # Errors
 /// Bad input (status 2); a fit that cannot start or a file that cannot be written.
 pub fn run(cmd: &FitCmd) -> Result<(), Failure> {
+    if cmd.family == crate::fit_contact::FAMILY {
+        return crate::fit_contact::run(cmd);
+    }
     let evaluate = match &cmd.evaluate {
         Some(name) => {
             Some(carry_lab::aero_file::resolve(name).map_err(|e| InputError::new("evaluate", e))?)

@@ -11,8 +11,10 @@ pub mod batch;
 pub mod cli;
 pub mod clubs;
 pub mod compute;
+pub mod contact;
 pub mod error;
 pub mod fit;
+pub mod fit_contact;
 pub mod ground;
 pub mod params;
 pub mod plot;
@@ -148,9 +150,9 @@ fn single(
     } else {
         let ctx = report::TableContext {
             club: p.club.preset.name,
-            club_speed_mps: (mode != Mode::Flight).then_some(p.delivery.club_speed_mps),
+            club_speed_mps: (mode != Mode::Flight).then_some(compute::club_speed_mps(p)),
             impact_location_m: (mode != Mode::Flight)
-                .then_some((p.delivery.impact_height_m, p.delivery.impact_toe_m)),
+                .then_some((compute::impact_height_m(p), p.delivery.impact_toe_m)),
         };
         report::table(mode, &r, output.units, &ctx).into_bytes()
     };

@@ -8,6 +8,7 @@ use crate::error::InputError;
 use crate::ground::GroundSpec;
 use crate::units::{Quantity, Units};
 use carry_core::aero::AeroModel;
+use carry_core::impact::ContactLaw;
 use carry_core::{PRESETS, Preset};
 
 /// Club head: a preset and any overrides.
@@ -31,27 +32,34 @@ pub struct ClubParams {
     pub cg_to_face_m: Option<[f64; 3]>,
     /// Coefficient of restitution.
     pub cor: Option<f64>,
+    /// Contact law; `None`: the preset's (the fitted compliant contact).
+    pub contact: Option<ContactLaw<f64>>,
+    /// The user named the preset: unspecified attack angle, dynamic loft and impact height
+    /// take its typical delivery.
+    pub named: bool,
 }
 
 /// The club delivery (launch-monitor terms).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct DeliveryParams {
-    /// Club head speed (m/s).
+    /// Club head speed (m/s); see `club_speed_given`.
     pub club_speed_mps: f64,
-    /// Attack angle (deg).
-    pub attack_angle_deg: f64,
+    /// The user gave the club speed (else a named club's typical speed replaces the default).
+    pub club_speed_given: bool,
+    /// Attack angle (deg); `None` = the named club's typical delivery, else 0.
+    pub attack_angle_deg: Option<f64>,
     /// Club path (deg).
     pub club_path_deg: f64,
     /// Face angle (deg).
     pub face_angle_deg: f64,
-    /// Dynamic loft (deg); `None` = the club's static loft.
+    /// Dynamic loft (deg); `None` = the named club's typical delivery, else its static loft.
     pub dynamic_loft_deg: Option<f64>,
     /// Lie (deg).
     pub lie_deg: f64,
     /// Club angular velocity (rad/s, G).
     pub club_spin_radps: [f64; 3],
-    /// Impact height up the face (m).
-    pub impact_height_m: f64,
+    /// Impact height up the face (m); `None` = the named club's typical delivery, else 0.
+    pub impact_height_m: Option<f64>,
     /// Impact offset toward the toe (m).
     pub impact_toe_m: f64,
 }
@@ -154,18 +162,21 @@ impl Default for Params {
                 face_depth_radius_m: None,
                 cg_to_face_m: None,
                 cor: None,
+                contact: None,
+                named: false,
             },
             ball_mass_kg: carry_core::Ball::<f64>::STANDARD_MASS_KG,
             ball_radius_m: carry_core::Ball::<f64>::STANDARD_RADIUS_M,
             delivery: DeliveryParams {
                 club_speed_mps: DEFAULT_CLUB_SPEED_MPS,
-                attack_angle_deg: 0.0,
+                club_speed_given: false,
+                attack_angle_deg: None,
                 club_path_deg: 0.0,
                 face_angle_deg: 0.0,
                 dynamic_loft_deg: None,
                 lie_deg: 0.0,
                 club_spin_radps: [0.0; 3],
-                impact_height_m: 0.0,
+                impact_height_m: None,
                 impact_toe_m: 0.0,
             },
             launch: LaunchParams {
@@ -195,6 +206,8 @@ pub enum Kind {
     Tensor,
     /// A preset name.
     Preset,
+    /// A contact-law name or TOML file.
+    Contact,
     /// An aerodynamic model: a built-in name or a model file.
     Aero,
     /// `true`/`false`/`1`/`0`/`yes`/`no`.
@@ -254,6 +267,7 @@ keys! {
     ImpactToe = "impact_toe", Number, Offset;
     Cor = "cor", Number, Plain;
     Club = "club", Preset, Plain;
+    Contact = "contact", Contact, Plain;
     ClubMass = "club_mass", Number, Plain;
     ClubInertia = "club_inertia", Tensor, Plain;
     Loft = "loft", Number, Plain;
@@ -313,6 +327,8 @@ pub enum Value {
     Tensor([f64; 9]),
     /// A preset.
     Preset(&'static Preset),
+    /// A contact law.
+    Contact(ContactLaw<f64>),
     /// An aerodynamic model.
     Aero(AeroModel<f64>),
     /// A switch.
@@ -347,6 +363,7 @@ impl Key {
             Kind::Vector => parse_vec3(text).map(Value::Vector).map_err(err),
             Kind::Tensor => parse_tensor(text).map(Value::Tensor).map_err(err),
             Kind::Preset => parse_preset(text).map(Value::Preset).map_err(err),
+            Kind::Contact => crate::contact::parse(text).map(Value::Contact).map_err(err),
             Kind::Aero => carry_lab::aero_file::resolve(text.trim())
                 .map(Value::Aero)
                 .map_err(err),
@@ -367,8 +384,11 @@ impl Key {
             Value::Number(x) => {
                 let x = si(x);
                 match self {
-                    Key::ClubSpeed => d.club_speed_mps = x,
-                    Key::AttackAngle => d.attack_angle_deg = x,
+                    Key::ClubSpeed => {
+                        d.club_speed_mps = x;
+                        d.club_speed_given = true;
+                    }
+                    Key::AttackAngle => d.attack_angle_deg = Some(x),
                     Key::ClubPath => d.club_path_deg = x,
                     Key::FaceAngle => d.face_angle_deg = x,
                     Key::DynamicLoft => d.dynamic_loft_deg = Some(x),
@@ -376,7 +396,7 @@ impl Key {
                     Key::ClubSpinX => d.club_spin_radps[0] = x,
                     Key::ClubSpinY => d.club_spin_radps[1] = x,
                     Key::ClubSpinZ => d.club_spin_radps[2] = x,
-                    Key::ImpactHeight => d.impact_height_m = x,
+                    Key::ImpactHeight => d.impact_height_m = Some(x),
                     Key::ImpactToe => d.impact_toe_m = x,
                     Key::Cor => c.cor = Some(x),
                     Key::ClubMass => c.mass_kg = Some(x),
@@ -430,7 +450,11 @@ impl Key {
                 }
             }
             Value::Tensor(t) => c.inertia_kgm2 = Some(t),
-            Value::Preset(preset) => c.preset = preset,
+            Value::Preset(preset) => {
+                c.preset = preset;
+                c.named = true;
+            }
+            Value::Contact(law) => c.contact = Some(law),
             Value::Aero(model) => s.aero = Some(model),
             Value::Bool(b) => match self {
                 Key::NoDrag => s.no_drag = b,
@@ -444,7 +468,7 @@ impl Key {
 }
 
 fn preset_cg(p: &Preset) -> [f64; 3] {
-    [p.cg_to_face_m, 0.0, 0.0]
+    p.cg_to_face_m
 }
 
 /// A finite number.

@@ -93,7 +93,13 @@ fn impact_args(case: &Value) -> Vec<String> {
     let inertia: Vec<String> = (0..3)
         .flat_map(|r| (0..3).map(move |k| arg(&i[r][k])))
         .collect();
-    let mut a: Vec<String> = vec!["impact".into(), "--json".into()];
+    // the golden files pin the seed's model: rolling contact
+    let mut a: Vec<String> = vec![
+        "impact".into(),
+        "--json".into(),
+        "--contact".into(),
+        "rolling".into(),
+    ];
     let mut opt = |name: &str, value: String| {
         a.push(format!("--{name}"));
         a.push(value);
@@ -343,9 +349,16 @@ fn flight_golden_cases_match_within_a_millimetre() {
 
 #[test]
 fn shot_is_the_union_of_impact_and_flight_and_matches_the_reference() {
-    // The golden reference flies with the seed's aerodynamics.
-    let shot = json(&["shot", "--json", "--aero", "quintavalla"]);
-    let impact = json(&["impact", "--json"]);
+    // The golden reference: the seed's contact and aerodynamics.
+    let shot = json(&[
+        "shot",
+        "--json",
+        "--aero",
+        "quintavalla",
+        "--contact",
+        "rolling",
+    ]);
+    let impact = json(&["impact", "--json", "--contact", "rolling"]);
     assert_eq!(shot["launch"], impact["launch"]);
     assert_eq!(shot["club_after"], impact["club_after"]);
     assert_eq!(shot["impulse_ns"], impact["impulse_ns"]);
@@ -401,8 +414,8 @@ fn the_readme_main_job_runs() {
     assert_eq!(r.code, 0, "{}", r.stderr);
     assert!(r.stdout.contains("carry"), "{}", r.stdout);
     assert!(r.stderr.is_empty());
-    // PHYSICS.md's reference carry, with the seed's aerodynamics.
-    let seed = run(&["shot", "--aero", "quintavalla"]);
+    // PHYSICS.md's reference carry, with the seed's contact and aerodynamics.
+    let seed = run(&["shot", "--aero", "quintavalla", "--contact", "rolling"]);
     assert!(seed.stdout.contains("199.7"), "{}", seed.stdout);
 }
 
@@ -429,10 +442,19 @@ fn f32_and_full_solver_and_integrators_agree() {
         "--json",
         "--solver",
         "full",
+        "--contact",
+        "rolling",
         "--impact-toe",
         "0.01",
     ]);
-    let reduced = json(&["impact", "--json", "--impact-toe", "0.01"]);
+    let reduced = json(&[
+        "impact",
+        "--json",
+        "--contact",
+        "rolling",
+        "--impact-toe",
+        "0.01",
+    ]);
     for k in 0..3 {
         let (a, b) = (
             num(&full["launch"]["ball_velocity_mps"][k]),
@@ -941,7 +963,17 @@ fn batch_keeps_order_reports_bad_rows_and_matches_single_runs() {
             .as_str()
             .is_some_and(|e| e.contains("club_speed"))
     );
-    let shot = json(&["shot", "--json"]);
+    // row 2 names the driver: its typical delivery fills in dynamic loft and impact height
+    let shot = json(&[
+        "shot",
+        "--json",
+        "--club",
+        "driver",
+        "--club-speed",
+        "45",
+        "--attack-angle",
+        "0",
+    ]);
     assert_eq!(rows[0]["flight"], shot["flight"]);
     assert_eq!(rows[0]["launch"], shot["launch"]);
 }
@@ -1009,7 +1041,15 @@ fn batch_rejects_unknown_and_inapplicable_columns() {
 fn batch_reads_stdin_and_imperial() {
     let out = carry()
         .args([
-            "batch", "impact", "--input", "-", "--units", "imperial", "--json",
+            "batch",
+            "impact",
+            "--input",
+            "-",
+            "--units",
+            "imperial",
+            "--json",
+            "--contact",
+            "rolling",
         ])
         .write_stdin(format!("club_speed\n{:?}\n", 45.0 / 0.44704))
         .output()
@@ -1028,7 +1068,14 @@ fn batch_reads_stdin_and_imperial() {
 
 #[test]
 fn csv_output_has_the_contract_columns() {
-    let r = run(&["shot", "--csv", "--aero", "quintavalla"]);
+    let r = run(&[
+        "shot",
+        "--csv",
+        "--aero",
+        "quintavalla",
+        "--contact",
+        "rolling",
+    ]);
     assert_eq!(r.code, 0);
     let lines: Vec<&str> = r.stdout.lines().collect();
     assert_eq!(lines.len(), 2);
@@ -1146,18 +1193,26 @@ fn clubs_lists_the_presets() {
         .iter()
         .filter_map(|c| c["name"].as_str())
         .collect();
-    assert_eq!(names, ["driver", "3wood", "7iron", "pw", "lw58"]);
+    assert_eq!(
+        names,
+        [
+            "driver", "3wood", "hybrid", "4iron", "5iron", "6iron", "7iron", "8iron", "9iron",
+            "pw", "gw", "sw", "lw"
+        ]
+    );
     let r = run(&["clubs"]);
     assert!(r.stdout.contains("driver") && r.stdout.contains("flat"));
 }
 
 #[test]
 fn table_layout_snapshot() {
-    insta::assert_snapshot!("shot_table", run(&["shot"]).stdout);
+    insta::assert_snapshot!("shot_table", run(&["shot", "--contact", "rolling"]).stdout);
     insta::assert_snapshot!(
         "shot_table_imperial_toe",
         run(&[
             "shot",
+            "--contact",
+            "rolling",
             "--units",
             "imperial",
             "--impact-toe",

@@ -7,12 +7,12 @@
 #![no_std]
 #![no_main]
 
+use carry_core::aero::AeroModel;
 use carry_core::air::{Air, Pressure, Weather};
 use carry_core::flight::{Integrator, Recorder, Sample, fly};
 use carry_core::ground::{Ground, Surface, Turf};
-use carry_core::impact::{self, Solver};
+use carry_core::impact::{self, CompliantContact, ContactLaw, Solver};
 use carry_core::linalg::Pivoting;
-use carry_core::aero::AeroModel;
 use carry_core::scene::{Effects, Scene};
 use carry_core::wind::Wind;
 use carry_core::{
@@ -31,7 +31,7 @@ fn v3<T: Real>(a: f64, b: f64, c: f64) -> Vector3<T> {
     Vector3::new(x(a), x(b), x(c))
 }
 
-fn club<T: Real>() -> ClubSpec<T> {
+fn club<T: Real>(contact: ContactLaw<T>) -> ClubSpec<T> {
     ClubSpec {
         mass_kg: x(0.2),
         inertia_kgm2: Matrix3::new(
@@ -55,14 +55,36 @@ fn club<T: Real>() -> ClubSpec<T> {
         },
         cg_to_face_m: v3(0.04, 0.0, 0.0),
         restitution: x(0.83),
+        contact,
     }
+}
+
+/// The seed's rolling contact and the compliant one, with opaque parameters.
+fn laws<T: Real>() -> [ContactLaw<T>; 2] {
+    [
+        ContactLaw::Rolling,
+        ContactLaw::Compliant(CompliantContact {
+            friction: x(0.4),
+            tangential_restitution: x(0.02),
+            tangential_restitution_slope: x(0.25),
+            restitution_speed_slope_spm: x(0.003),
+        }),
+    ]
 }
 
 /// Every impact entry point: validation, delivery → strike, a strike given directly, and
 /// the solvers (reduced; full with each pivoting).
 fn impact_paths<T: Real>() -> T {
     let mut acc = T::zero();
-    let Ok(head) = club::<T>().validate() else {
+    for law in laws() {
+        acc += impact_paths_with(black_box(law));
+    }
+    acc
+}
+
+fn impact_paths_with<T: Real>(law: ContactLaw<T>) -> T {
+    let mut acc = T::zero();
+    let Ok(head) = club::<T>(law).validate() else {
         return acc;
     };
     let Ok(ball) = Ball::new(x(0.04593), x(0.021336)) else {

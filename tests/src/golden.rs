@@ -4,7 +4,7 @@
 
 use carry_core::real::lit;
 use carry_core::units::deg;
-use carry_core::{Ball, ClubSpec, Delivery, FaceLocation, Real};
+use carry_core::{Ball, ClubSpec, ContactLaw, Delivery, FaceLocation, Real};
 use nalgebra::{Matrix3, Vector3};
 use serde_json::Value;
 
@@ -109,6 +109,8 @@ impl ImpactCase {
             face_depth_radius_m: c.get("ellipsoid_a_m").map(|a| lit(num(a))),
             cg_to_face_m: Vector3::new(lit(cg[0]), lit(cg[1]), lit(cg[2])),
             restitution: lit(num(&self.json["delivery"]["cor"])),
+            // the golden files pin the seed's model: rolling contact, named explicitly
+            contact: ContactLaw::Rolling,
         }
     }
 

@@ -2,7 +2,9 @@
 
 use carry_core::real::lit;
 use carry_core::units::deg;
-use carry_core::{Ball, ClubHead, ClubSpec, Delivery, FaceLocation, PRESETS, Real, Strike};
+use carry_core::{
+    Ball, ClubHead, ClubSpec, ContactLaw, Delivery, FaceLocation, PRESETS, Real, Strike,
+};
 use nalgebra::{Matrix3, Vector3};
 use proptest::prelude::*;
 
@@ -28,6 +30,8 @@ pub struct Scenario {
     pub club_spin_radps: [f64; 3],
     pub height_m: f64,
     pub toe_m: f64,
+    /// The contact law (the seed's rolling one unless a test asks otherwise).
+    pub contact: ContactLaw<f64>,
 }
 
 impl Scenario {
@@ -48,6 +52,7 @@ impl Scenario {
             face_depth_radius_m: None,
             cg_to_face_m: Vector3::new(lit(cg[0]), lit(cg[1]), lit(cg[2])),
             restitution: lit(self.restitution),
+            contact: self.contact.cast(),
         }
     }
 
@@ -145,6 +150,7 @@ pub fn scenario() -> impl Strategy<Value = Scenario> {
         club_spin_radps: d.6,
         height_m: d.7,
         toe_m: d.8,
+        contact: ContactLaw::Rolling,
     })
 }
 
@@ -160,9 +166,34 @@ pub fn preset_scenario() -> impl Strategy<Value = Scenario> {
             loft_deg: p.loft_deg,
             roll_radius_m: p.roll_radius_m,
             bulge_radius_m: p.bulge_radius_m,
-            cg_to_face_m: [p.cg_to_face_m, 0.0, 0.0],
+            cg_to_face_m: p.cg_to_face_m,
             restitution: p.restitution * e_frac,
             ..s
         }
+    })
+}
+
+/// Any valid compliant contact law, with the limits weighted in: μ = 0, μ = ∞, e_t at its
+/// clamps, steep obliquity slopes, steep restitution speed slopes.
+pub fn compliant_law() -> impl Strategy<Value = carry_core::impact::CompliantContact<f64>> {
+    (
+        prop_oneof![Just(0.0), Just(f64::INFINITY), 0.0..2.0_f64],
+        prop_oneof![Just(-1.0), Just(0.0), Just(1.0), -1.0..=1.0_f64],
+        prop_oneof![Just(0.0), -3.0..3.0_f64],
+        prop_oneof![Just(0.0), 0.0..0.03_f64],
+    )
+        .prop_map(|(mu, e0, s, k)| carry_core::impact::CompliantContact {
+            friction: mu,
+            tangential_restitution: e0,
+            tangential_restitution_slope: s,
+            restitution_speed_slope_spm: k,
+        })
+}
+
+/// [`scenario`] with a [`compliant_law`].
+pub fn compliant_scenario() -> impl Strategy<Value = Scenario> {
+    (scenario(), compliant_law()).prop_map(|(s, law)| Scenario {
+        contact: ContactLaw::Compliant(law),
+        ..s
     })
 }

@@ -8,7 +8,7 @@ use carry_core::impact::{self, Solver};
 use carry_core::real::{lit, to_f64};
 use carry_core::scene::Scene;
 use carry_core::units::{deg, rpm};
-use carry_core::{Ball, Error, Integrator, Launch, Real, Wind, fly};
+use carry_core::{Ball, ContactLaw, Error, Integrator, Launch, Real, Wind, fly};
 use carry_tests::scenario::{Scenario, scenario};
 use nalgebra::Vector3;
 use proptest::prelude::*;
@@ -320,6 +320,7 @@ fn energy_gain_at_the_edge() {
         club_spin_radps: [0.0; 3],
         height_m: 0.0,
         toe_m: -0.298_679_923_601_070_8,
+        contact: ContactLaw::Rolling,
     };
     let Ok((club, ball, strike)) = s.build::<f64>() else {
         panic!("scenario")

@@ -10,6 +10,11 @@
 //! rows 13–14 t_iᵀ u                  = 0
 //! u = V_b − [r_ball]× Ω_b − V_c + [r_imp]× Ω_c
 //! ```
+//!
+//! Seed contact only ([`super::ContactLaw::Rolling`]): the compliant law is piecewise (friction
+//! cone, energy bound), and its branch is decided from the collision matrix `K` of the
+//! reduced form; a 15×15 version would re-solve that decision, not check it independently.
+//! Asking for it ([`super::solve`]) is a typed error.
 
 use super::{PostImpact, Problem};
 use crate::error::Result;

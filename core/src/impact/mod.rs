@@ -14,18 +14,26 @@
 //! eliminates the 15×15 system ([`full`]); [`Solver::Reduced`] solves the 3×3
 //! collision-matrix form `K P = −u⁰ − e (n·u⁰) n` ([`reduced`]).
 //!
+//! The contact conditions above are the seed's law, [`ContactLaw::Rolling`]. The club may
+//! hold [`ContactLaw::Compliant`] instead ([`contact_law`]: Coulomb friction cone,
+//! tangential restitution, speed-dependent COR, energy never increases), which the reduced
+//! solver computes from the same `K`; the full solver supports only the seed's law.
+//!
 //! Source: N. Petersen & J. McPhee, "Shape optimization of golf clubface using finite
 //! element impact models", Sports Engineering 12 (2009); the impulse–momentum model of
 //! their three-dimensional club–ball impact.
 
+pub mod contact_law;
 pub mod full;
 pub mod reduced;
+
+pub use contact_law::{CompliantContact, ContactLaw, Regime};
 
 use crate::ball::{Ball, BallMotion};
 use crate::club::ClubHead;
 use crate::contact::Contact;
 use crate::delivery::{ClubMotion, Strike};
-use crate::error::{Error, Result};
+use crate::error::{Error, Field, Reason, Result};
 use crate::launch::LaunchMetrics;
 use crate::linalg::Pivoting;
 use crate::real::Real;
@@ -56,7 +64,8 @@ pub struct Problem<T: Real> {
     pub ball_mass_kg: T,
     /// Ball moment of inertia (kg·m²).
     pub ball_inertia_kgm2: T,
-    /// Coefficient of restitution.
+    /// Coefficient of restitution (the club's rating; the compliant law varies it with
+    /// the normal speed).
     pub restitution: T,
     /// Contact geometry.
     pub contact: Contact<T>,
@@ -128,7 +137,7 @@ impl<T: Real> Problem<T> {
         })
     }
 
-    /// The target relative contact velocity after impact, `−e (n·u⁰) n`.
+    /// The seed's (rolling) target relative contact velocity after impact, `−e (n·u⁰) n`.
     #[must_use]
     pub fn target_velocity_mps(&self) -> Vector3<T> {
         let n = &self.contact.normal;
@@ -137,6 +146,7 @@ impl<T: Real> Problem<T> {
 
     /// Post-impact motion from the impulse `p` on the ball (momentum balances).
     #[must_use]
+    #[inline(always)]
     pub fn apply_impulse(&self, p: &Vector3<T>) -> PostImpact<T> {
         let k = &self.contact;
         PostImpact {
@@ -155,7 +165,8 @@ impl<T: Real> Problem<T> {
 ///
 /// # Errors
 /// [`Error::OffFace`], [`Error::NoApproach`], or [`Error::Singular`] when the system is too
-/// ill-conditioned for the precision.
+/// ill-conditioned for the precision; [`Error::InvalidInput`] (`ContactLaw`,
+/// `UnsupportedBySolver`) for the full solver with a contact law other than the seed's.
 pub fn solve<T: Real>(
     club: &ClubHead<T>,
     ball: &Ball<T>,
@@ -163,9 +174,17 @@ pub fn solve<T: Real>(
     solver: Solver,
 ) -> Result<ImpactOutcome<T>> {
     let problem = Problem::new(club, ball, strike)?;
-    let post = match solver {
-        Solver::Reduced => reduced::solve(&problem)?,
-        Solver::Full(pivoting) => full::solve(&problem, pivoting)?,
+    // the seed's path is the seed's code: a law it does not use costs it nothing
+    let post = match (solver, club.contact_law()) {
+        (Solver::Reduced, ContactLaw::Rolling) => reduced::solve(&problem)?,
+        (Solver::Reduced, ContactLaw::Compliant(law)) => reduced::solve_compliant(&problem, law)?,
+        (Solver::Full(pivoting), ContactLaw::Rolling) => full::solve(&problem, pivoting)?,
+        (Solver::Full(_), ContactLaw::Compliant(_)) => {
+            return Err(Error::invalid(
+                Field::ContactLaw,
+                Reason::UnsupportedBySolver,
+            ));
+        }
     };
     let ball_after = BallMotion {
         velocity_mps: post.ball_velocity_mps,

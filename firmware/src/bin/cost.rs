@@ -93,6 +93,18 @@ fn suite<T: Real>(ticks: &Ticks, k: &mut u32, p: &str) {
         10,
         &mut || impact::solve(&club, &ball, &strike, Solver::Reduced).map(|_| (0, f64::NAN)),
     );
+    let compliant_club = black_box(shot::driver_compliant::<T>())
+        .validate()
+        .unwrap_or_else(|_| carry_firmware::exit(1));
+    op(
+        ticks,
+        k,
+        label!("impact solve, reduced 3x3, compliant contact"),
+        10,
+        &mut || {
+            impact::solve(&compliant_club, &ball, &strike, Solver::Reduced).map(|_| (0, f64::NAN))
+        },
+    );
     op(
         ticks,
         k,
@@ -166,6 +178,23 @@ fn suite<T: Real>(ticks: &Ticks, k: &mut u32, p: &str) {
         &mut || {
             carry_core::shot::play(&club, &ball, &delivery, &prepared, &fidelity, None)
                 .map(|o| (o.flight.stats.force_evaluations, to_f64(o.flight.carry_m)))
+        },
+    );
+    op(
+        ticks,
+        k,
+        label!("FULL SHOT: shot::play, compliant contact"),
+        1,
+        &mut || {
+            carry_core::shot::play(
+                &compliant_club,
+                &ball,
+                &delivery,
+                &prepared,
+                &fidelity,
+                None,
+            )
+            .map(|o| (o.flight.stats.force_evaluations, to_f64(o.flight.carry_m)))
         },
     );
     // The same shot with the seed's aerodynamics (the calibrated model is the default).
@@ -243,6 +272,23 @@ fn suite<T: Real>(ticks: &Ticks, k: &mut u32, p: &str) {
         &mut || {
             shot::full(&spec, &delivery, Solver::Reduced, &scene, &integrator)
                 .map(|(_, f)| (f.stats.force_evaluations, to_f64(f.carry_m)))
+        },
+    );
+    let compliant_spec = black_box(shot::driver_compliant::<T>());
+    op(
+        ticks,
+        k,
+        label!("full shot + validate + prepare, compliant contact"),
+        1,
+        &mut || {
+            shot::full(
+                &compliant_spec,
+                &delivery,
+                Solver::Reduced,
+                &scene,
+                &integrator,
+            )
+            .map(|(_, f)| (f.stats.force_evaluations, to_f64(f.carry_m)))
         },
     );
 }

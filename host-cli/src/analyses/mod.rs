@@ -67,7 +67,7 @@ pub fn setup<T: Real>(p: &Params, n: &Numerics) -> Result<Setup<T>, InputError> 
     Ok(Setup {
         club,
         ball,
-        delivery: compute::delivery(&p.delivery, &club),
+        delivery: compute::delivery(p, &club),
         scene,
         fidelity: Fidelity {
             solver: n.solver(),

@@ -5,10 +5,11 @@
 //! A family implements [`Problem`]; [`fit`] solves it with Levenberg–Marquardt
 //! ([`solve`]), tabulates every row, and refits once per left-out row
 //! ([`FitOptions::leave_one_out`]) to measure how the model predicts data it was not
-//! fitted to. [`flight`] holds the aerodynamic families.
+//! fitted to. [`flight`] holds the aerodynamic families, [`impact`] the compliant contact.
 
 mod bounded;
 pub mod flight;
+pub mod impact;
 mod problem;
 mod report;
 mod solve;

@@ -17,8 +17,8 @@ use carry_core::air::{Air, Pressure, Weather};
 use carry_core::real::lit;
 use carry_core::units::{deg, rpm};
 use carry_core::{
-    Ball, ClubHead, ClubSpec, Delivery, Effects, FaceLocation, Launch, PRESETS, PreparedScene,
-    Real, Scene, Wind,
+    Ball, ClubHead, ClubSpec, ContactLaw, Delivery, Effects, FaceLocation, Launch, PRESETS,
+    PreparedScene, Real, Scene, Wind,
 };
 use nalgebra::{Matrix3, Vector3};
 use serde_json::Value;
@@ -284,6 +284,7 @@ impl Shot {
                     face_depth_radius_m: club.face_depth_radius_m.map(lit),
                     cg_to_face_m: v3(&club.cg_to_face_m),
                     restitution: lit(club.restitution),
+                    contact: club.contact.cast(),
                 };
                 let delivery = Delivery::<T> {
                     club_speed_mps: lit(d.club_speed_mps),
@@ -465,6 +466,7 @@ fn golden_impacts() -> Result<Vec<Shot>, String> {
             face_depth_radius_m: k.get("ellipsoid_a_m").map(num).transpose()?,
             cg_to_face_m: vec3(&k["cg_to_face_m"])?,
             restitution: field(d, "cor")?,
+            contact: ContactLaw::Rolling,
         };
         let delivery = Delivery {
             club_speed_mps: field(d, "club_speed_mps")?,
@@ -517,7 +519,11 @@ fn preset(name: &str) -> ClubSpec<f64> {
     PRESETS
         .iter()
         .find(|p| p.name == name)
-        .map_or_else(ClubSpec::driver, |p| p.spec())
+        // the study compares numerics (both solvers): the seed's rolling contact
+        .map_or_else(ClubSpec::driver, |p| ClubSpec {
+            contact: ContactLaw::Rolling,
+            ..p.spec()
+        })
 }
 
 /// A 5-iron (estimate: 253 g, 27°, flat face), between the 3-wood and 7-iron presets.
