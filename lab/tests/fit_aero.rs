@@ -188,3 +188,104 @@ fn calibrated_default_is_physically_plausible() {
     assert!((0.01..0.08).contains(&per_second), "{per_second}");
     assert_eq!(c.validate(), Ok(ModernAero::<f64>::tour_2023()));
 }
+
+/// f32 flies the calibrated model within 1 cm of f64 at the default fidelity on the 23
+/// tour launches (the documented f32 accuracy, docs/aero.md).
+#[test]
+fn calibrated_default_f32_carry_within_a_centimetre_of_f64() {
+    let Some(rows) = common::tour_2023() else {
+        return;
+    };
+    let mut worst = 0.0_f64;
+    for r in &rows {
+        let fly = |f32_: bool| -> f64 {
+            use carry_core::real::{lit, to_f64};
+            use carry_core::{Ball, Launch, Scene, fly};
+            if f32_ {
+                let l = Launch::<f32> {
+                    ball_speed_mps: lit(r.launch.ball_speed_mps),
+                    launch_angle_rad: lit(r.launch.launch_angle_rad),
+                    launch_direction_rad: lit(r.launch.launch_direction_rad),
+                    backspin_radps: lit(r.launch.backspin_radps),
+                    sidespin_radps: lit(r.launch.sidespin_radps),
+                };
+                let m = l.ball_motion().expect("launch");
+                let o = fly(
+                    &Ball::standard(),
+                    &m,
+                    &Scene::default(),
+                    &Integrator::default(),
+                    None,
+                )
+                .expect("flies");
+                to_f64(o.carry_m)
+            } else {
+                let m = r.launch.ball_motion().expect("launch");
+                let o = fly(
+                    &Ball::standard(),
+                    &m,
+                    &Scene::default(),
+                    &Integrator::default(),
+                    None,
+                )
+                .expect("flies");
+                o.carry_m
+            }
+        };
+        worst = worst.max((fly(true) - fly(false)).abs());
+    }
+    println!("worst |f32 − f64| carry: {worst} m");
+    assert!(worst < 0.01, "{worst}");
+}
+
+/// The calibrated model pinned by a committed regression table: carry, apex and landing
+/// angle of the 23 tour launches at the default fidelity in f64 (fit conditions).
+/// Produced by `CARRY_BLESS=1 cargo test -p carry-lab --test fit_aero regression_table`
+/// when the model is changed on purpose; any other change of its flights fails here.
+#[test]
+fn regression_table_of_the_calibrated_default() {
+    let Some(rows) = common::tour_2023() else {
+        return;
+    };
+    let path =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/tour2023_regression.csv");
+    let mut text = String::from("label,carry_m,apex_m,land_angle_deg\n");
+    let mut now = Vec::new();
+    for r in &rows {
+        let [carry, apex, land, ..] = predict(
+            &AeroModel::tour_2023(),
+            &r.launch,
+            &r.air,
+            &Integrator::default(),
+        )
+        .expect("flies");
+        text.push_str(&format!("{},{carry:?},{apex:?},{land:?}\n", r.label));
+        now.push([carry, apex, land]);
+    }
+    if std::env::var_os("CARRY_BLESS").is_some() {
+        std::fs::create_dir_all(path.parent().expect("dir")).expect("mkdir");
+        std::fs::write(&path, &text).expect("write");
+        return;
+    }
+    let committed = std::fs::read_to_string(&path).expect("the committed table");
+    let table: Vec<Vec<f64>> = committed
+        .lines()
+        .skip(1)
+        .map(|l| {
+            l.split(',')
+                .skip(1)
+                .map(|x| x.parse().expect("number"))
+                .collect()
+        })
+        .collect();
+    assert_eq!(table.len(), now.len());
+    for ((row, got), r) in table.iter().zip(&now).zip(&rows) {
+        for (a, b) in row.iter().zip(got) {
+            assert!(
+                (a - b).abs() <= 1e-9 * a.abs().max(1.0),
+                "{}: {a} vs {b}",
+                r.label
+            );
+        }
+    }
+}
