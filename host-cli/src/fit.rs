@@ -532,6 +532,17 @@ fn family_name(f: AeroFamily) -> &'static str {
         .map_or("?", |(n, _)| n)
 }
 
+/// How a fit ended, for the report's first line.
+pub(crate) fn status(f: &Fit, evaluated: bool) -> &'static str {
+    if evaluated {
+        "evaluated, not fitted"
+    } else if f.converged {
+        "converged"
+    } else {
+        "NOT converged"
+    }
+}
+
 /// The readable report.
 fn table(family: AeroFamily, f: &Fit, ignored: &[String], cmd: &FitCmd) -> String {
     let u = cmd.units;
@@ -541,13 +552,7 @@ fn table(family: AeroFamily, f: &Fit, ignored: &[String], cmd: &FitCmd) -> Strin
         "FIT  family {}, {} rows, {} ({} flights)",
         family_name(family),
         f.rows.len(),
-        if cmd.evaluate.is_some() {
-            "evaluated, not fitted"
-        } else if f.converged {
-            "converged"
-        } else {
-            "NOT converged"
-        },
+        crate::fit::status(f, cmd.evaluate.is_some()),
         f.row_evaluations
     );
     if !ignored.is_empty() {

@@ -114,13 +114,7 @@ fn table(f: &Fit, friction: f64, cmd: &FitCmd) -> String {
         s,
         "FIT  family {FAMILY}, {} rows, {} ({} impacts)",
         f.rows.len(),
-        if cmd.evaluate.is_some() {
-            "evaluated, not fitted"
-        } else if f.converged {
-            "converged"
-        } else {
-            "NOT converged"
-        },
+        crate::fit::status(f, cmd.evaluate.is_some()),
         f.row_evaluations
     );
     let _ = writeln!(s, "\nCOEFFICIENTS");
