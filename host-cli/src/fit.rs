@@ -19,10 +19,10 @@
 //! labels the rows. Other columns are ignored and listed.
 
 use crate::error::{Failure, InputError};
+use crate::params::SceneParams;
 use crate::units::{Quantity, Units};
-use carry_core::air::{Pressure, Weather};
+use carry_core::Launch;
 use carry_core::units::{M_PER_FOOT, M_PER_YARD, MPS_PER_MPH, deg, rpm};
-use carry_core::{Air, Launch};
 use carry_lab::fit::flight::{AeroFamily, AeroProblem, ShotRow};
 use carry_lab::fit::{self, Fit, FitOptions};
 use clap::Args;
@@ -89,55 +89,17 @@ _c _f _pa _pct) overrides --units, so TrackMan exports read as they are:
   carry fit --input ../shared/data/trackman_tour_2023.csv --temperature 21.1 --humidity 50 \
 --pressure 101325 --output tour.toml";
 
-/// Conditions given per row or globally (SI; humidity in percent).
-#[derive(Debug, Clone, Copy, Default)]
-pub struct Conditions {
-    /// Air density (kg/m³).
-    pub air_density: Option<f64>,
-    /// Temperature (°C).
-    pub temperature_c: Option<f64>,
-    /// Relative humidity (%).
-    pub humidity_pct: Option<f64>,
-    /// Station pressure (Pa).
-    pub pressure_pa: Option<f64>,
-    /// Altitude (m).
-    pub altitude_m: Option<f64>,
-}
+/// The air-condition options of a row or of the command line (the scene options' air
+/// fields: density, temperature, humidity, pressure, altitude; SI, humidity in percent).
+pub type Conditions = SceneParams;
 
-impl Conditions {
-    fn or(self, global: Self) -> Self {
-        let any = self.air_density.is_some()
-            || self.temperature_c.is_some()
-            || self.humidity_pct.is_some()
-            || self.pressure_pa.is_some()
-            || self.altitude_m.is_some();
-        if any { self } else { global }
-    }
-
-    fn air(self) -> Result<Air<f64>, String> {
-        let weather = self.temperature_c.is_some()
-            || self.humidity_pct.is_some()
-            || self.pressure_pa.is_some()
-            || self.altitude_m.is_some();
-        match (self.air_density, weather) {
-            (Some(_), true) => Err("give either the air density or the weather, not both".into()),
-            (Some(rho), false) => Ok(Air::Density(rho)),
-            (None, false) => Ok(Air::default()),
-            (None, true) => Ok(Air::Weather(Weather {
-                temperature_c: self
-                    .temperature_c
-                    .unwrap_or(crate::scene::DEFAULT_TEMPERATURE_C),
-                relative_humidity: self.humidity_pct.unwrap_or(0.0) / 100.0,
-                pressure: match (self.pressure_pa, self.altitude_m) {
-                    (Some(_), Some(_)) => {
-                        return Err("give either the pressure or the altitude, not both".into());
-                    }
-                    (Some(p), None) => Pressure::Pa(p),
-                    (None, h) => Pressure::Altitude(h.unwrap_or(0.0)),
-                },
-            })),
-        }
-    }
+/// Whether `c` names any air condition.
+fn any_condition(c: &Conditions) -> bool {
+    c.air_density_kgm3.is_some()
+        || c.temperature_c.is_some()
+        || c.humidity_pct.is_some()
+        || c.pressure_pa.is_some()
+        || c.altitude_m.is_some()
 }
 
 /// What a column holds.
@@ -346,17 +308,18 @@ pub fn read_rows(
             }
             (None, None) => return Err(missing("backspin")),
         };
-        let conditions = Conditions {
-            air_density: get(Field::AirDensity),
+        let row = Conditions {
+            air_density_kgm3: get(Field::AirDensity),
             temperature_c: get(Field::Temperature),
             humidity_pct: get(Field::Humidity),
             pressure_pa: get(Field::Pressure),
             altitude_m: get(Field::Altitude),
-        }
-        .or(*global);
-        let air = conditions
-            .air()
-            .map_err(|e| InputError::new("input", format!("line {line}: {e}")))?;
+            ..Conditions::default()
+        };
+        let conditions = if any_condition(&row) { row } else { *global };
+        let air = crate::scene::air(&conditions).map_err(|e| {
+            InputError::new("input", format!("line {line}: {}: {}", e.key, e.reason))
+        })?;
         let weight = get(Field::Weight).unwrap_or(1.0);
         if !(weight > 0.0) {
             return Err(InputError::new(
@@ -413,11 +376,12 @@ impl FitCmd {
     fn conditions(&self) -> Conditions {
         let u = self.units;
         Conditions {
-            air_density: self.air_density,
+            air_density_kgm3: self.air_density,
             temperature_c: self.temperature.map(|t| u.to_si(Quantity::Temperature, t)),
             humidity_pct: self.humidity,
             pressure_pa: self.pressure,
             altitude_m: self.altitude.map(|h| u.to_si(Quantity::Height, h)),
+            ..Conditions::default()
         }
     }
 }
@@ -452,9 +416,7 @@ pub fn run(cmd: &FitCmd) -> Result<(), Failure> {
         )
     })?;
     let global = cmd.conditions();
-    global
-        .air()
-        .map_err(|e| InputError::new("temperature", e))?;
+    crate::scene::air::<f64>(&global)?;
     let (rows, ignored) = read_rows(&cmd.input, cmd.units, &global)?;
     let problem = AeroProblem::new(family);
     let options = FitOptions {

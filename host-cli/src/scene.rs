@@ -59,17 +59,17 @@ fn v3<T: Real>(v: [f64; 3]) -> Vector3<T> {
     Vector3::new(lit(v[0]), lit(v[1]), lit(v[2]))
 }
 
-/// Resolves the scene options into a core scene in precision `T` (the core validates the
-/// values themselves when the flight prepares it).
+/// The air of the scene options: a fixed density, the weather (defaults 15 °C, 0 %, sea
+/// level), or standard air. Also the per-row conditions of `carry fit`.
 ///
 /// # Errors
-/// Conflicting options, or a wind speed that is negative.
-pub fn build<T: Real>(s: &SceneParams) -> Result<Scene<T>, InputError> {
+/// Both a density and weather, or both a pressure and an altitude.
+pub fn air<T: Real>(s: &SceneParams) -> Result<Air<T>, InputError> {
     let weather_given = s.temperature_c.is_some()
         || s.humidity_pct.is_some()
         || s.pressure_pa.is_some()
         || s.altitude_m.is_some();
-    let air = match (s.air_density_kgm3, weather_given) {
+    Ok(match (s.air_density_kgm3, weather_given) {
         (Some(_), true) => {
             return Err(InputError::new(
                 "air_density",
@@ -95,7 +95,16 @@ pub fn build<T: Real>(s: &SceneParams) -> Result<Scene<T>, InputError> {
                 pressure,
             })
         }
-    };
+    })
+}
+
+/// Resolves the scene options into a core scene in precision `T` (the core validates the
+/// values themselves when the flight prepares it).
+///
+/// # Errors
+/// Conflicting options, or a wind speed that is negative.
+pub fn build<T: Real>(s: &SceneParams) -> Result<Scene<T>, InputError> {
+    let air = air(s)?;
     let profile_given = s.wind_reference_height_m.is_some() || s.wind_exponent.is_some();
     let polar_given = s.wind_speed_mps.is_some() || s.wind_direction_deg.is_some();
     let profile = |reference_mps: Vector3<T>| Wind::Profile {

@@ -30,6 +30,19 @@ fn synthetic(model: &AeroModel<f64>, noise: impl Fn(usize, usize) -> f64) -> Vec
         .collect()
 }
 
+/// `problem` fitted to `rows` without leave-one-out.
+fn fit_once(problem: &AeroProblem, rows: &[ShotRow]) -> fit::Fit {
+    fit::fit(
+        problem,
+        rows,
+        FitOptions {
+            leave_one_out: false,
+        },
+        &|| {},
+    )
+    .expect("fits")
+}
+
 /// Relative coefficient error of the noise-free recovery of the seed family.
 const RECOVERY_REL: f64 = 1e-6;
 
@@ -43,15 +56,7 @@ fn recovers_the_seed_coefficients_from_noise_free_shots() {
     // Start well away from the truth.
     let mut problem = AeroProblem::new(AeroFamily::Quintavalla);
     problem.initial = vec![0.25, 0.4, 0.15, 0.6, 0.02];
-    let f = fit::fit(
-        &problem,
-        &rows,
-        FitOptions {
-            leave_one_out: false,
-        },
-        &|| {},
-    )
-    .expect("fits");
+    let f = fit_once(&problem, &rows);
     for (p, t) in f.values().iter().zip(truth) {
         assert!(((p - t) / t).abs() <= RECOVERY_REL, "{p} vs {t}: {f:?}");
     }
@@ -68,15 +73,7 @@ fn stays_stable_with_one_percent_noise() {
     if rows.is_empty() {
         return;
     }
-    let f = fit::fit(
-        &AeroProblem::new(AeroFamily::Modern),
-        &rows,
-        FitOptions {
-            leave_one_out: false,
-        },
-        &|| {},
-    )
-    .expect("fits");
+    let f = fit_once(&AeroProblem::new(AeroFamily::Modern), &rows);
     assert!(f.converged, "{}", f.termination);
     // The refitted model flies the true model's shots to within the noise.
     let carry = f.summary_of("carry").expect("carry");
@@ -99,15 +96,7 @@ fn the_calibrated_default_is_the_fit_of_the_tour_data() {
     let Some(rows) = common::tour_2023() else {
         return;
     };
-    let f = fit::fit(
-        &AeroProblem::new(AeroFamily::Modern),
-        &rows,
-        FitOptions {
-            leave_one_out: false,
-        },
-        &|| {},
-    )
-    .expect("fits");
+    let f = fit_once(&AeroProblem::new(AeroFamily::Modern), &rows);
     for ((name, p), committed) in f
         .parameters
         .iter()
@@ -189,6 +178,30 @@ fn calibrated_default_is_physically_plausible() {
     assert_eq!(c.validate(), Ok(ModernAero::<f64>::tour_2023()));
 }
 
+/// The default-fidelity carry of `launch` (given in f64) flown in precision `T` with the
+/// default scene (the calibrated model), in metres.
+fn carry_of<T: carry_core::Real>(launch: &carry_core::Launch<f64>) -> f64 {
+    use carry_core::real::{lit, to_f64};
+    use carry_core::{Ball, Launch, Scene, fly};
+    let l = Launch::<T> {
+        ball_speed_mps: lit(launch.ball_speed_mps),
+        launch_angle_rad: lit(launch.launch_angle_rad),
+        launch_direction_rad: lit(launch.launch_direction_rad),
+        backspin_radps: lit(launch.backspin_radps),
+        sidespin_radps: lit(launch.sidespin_radps),
+    };
+    let m = l.ball_motion().expect("launch");
+    let o = fly(
+        &Ball::standard(),
+        &m,
+        &Scene::default(),
+        &Integrator::default(),
+        None,
+    )
+    .expect("flies");
+    to_f64(o.carry_m)
+}
+
 /// f32 flies the calibrated model within 1 cm of f64 at the default fidelity on the 23
 /// tour launches (the documented f32 accuracy, docs/aero.md).
 #[test]
@@ -199,37 +212,10 @@ fn calibrated_default_f32_carry_within_a_centimetre_of_f64() {
     let mut worst = 0.0_f64;
     for r in &rows {
         let fly = |f32_: bool| -> f64 {
-            use carry_core::real::{lit, to_f64};
-            use carry_core::{Ball, Launch, Scene, fly};
             if f32_ {
-                let l = Launch::<f32> {
-                    ball_speed_mps: lit(r.launch.ball_speed_mps),
-                    launch_angle_rad: lit(r.launch.launch_angle_rad),
-                    launch_direction_rad: lit(r.launch.launch_direction_rad),
-                    backspin_radps: lit(r.launch.backspin_radps),
-                    sidespin_radps: lit(r.launch.sidespin_radps),
-                };
-                let m = l.ball_motion().expect("launch");
-                let o = fly(
-                    &Ball::standard(),
-                    &m,
-                    &Scene::default(),
-                    &Integrator::default(),
-                    None,
-                )
-                .expect("flies");
-                to_f64(o.carry_m)
+                carry_of::<f32>(&r.launch)
             } else {
-                let m = r.launch.ball_motion().expect("launch");
-                let o = fly(
-                    &Ball::standard(),
-                    &m,
-                    &Scene::default(),
-                    &Integrator::default(),
-                    None,
-                )
-                .expect("flies");
-                o.carry_m
+                carry_of::<f64>(&r.launch)
             }
         };
         worst = worst.max((fly(true) - fly(false)).abs());

@@ -115,7 +115,6 @@ impl<T: Real> AeroModel<T> {
         let r = ball.radius_m();
         let half_rho_area = lit::<T>(0.5) * density * T::pi() * r * r;
         let a = half_rho_area / ball.mass_kg();
-        let decay_per_cm = half_rho_area * r * ball.diameter_m() / ball.inertia_kgm2();
         Ok(match self.validate()? {
             Self::Linear(c) => PreparedAero {
                 forces: Forces::Linear {
@@ -124,6 +123,7 @@ impl<T: Real> AeroModel<T> {
                     lift_v: a * c.cl0,
                     lift_s: a * c.cl_spin * r,
                 },
+                // The seed's operation order, for bit identity with the golden files.
                 decay: half_rho_area * c.cm_spin * r * ball.diameter_m() / ball.inertia_kgm2(),
             },
             Self::Modern(c) => PreparedAero {
@@ -137,7 +137,7 @@ impl<T: Real> AeroModel<T> {
                     radius: r,
                     lift_half: c.cl_half_spin,
                 },
-                decay: decay_per_cm * c.cm_spin,
+                decay: half_rho_area * r * ball.diameter_m() / ball.inertia_kgm2() * c.cm_spin,
             },
         })
     }
