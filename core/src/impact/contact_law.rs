@@ -203,7 +203,7 @@ impl<T: Real> CompliantContact<T> {
             } else {
                 Regime::Grip
             };
-            return Ok((grip, regime));
+            return finite_impulse(grip, regime);
         }
         // slide: impulse on the cone, opposing the initial slip
         let d = if slip > zero {
@@ -228,12 +228,18 @@ impl<T: Real> CompliantContact<T> {
         } else {
             (bound_n, Regime::SlideEnergyBound)
         };
-        let p = q * p_n.max(zero);
-        if p.iter().all(|x| x.is_finite()) {
-            Ok((p, regime))
-        } else {
-            Err(Error::Singular)
-        }
+        finite_impulse(q * p_n.max(zero), regime)
+    }
+}
+
+/// A finite impulse, or [`Error::Singular`]: a matrix that is not a collision matrix
+/// (not symmetric positive definite) can make the energy scaling `√(u⁰ᵀK⁻¹u⁰ / u*ᵀK⁻¹u*)`
+/// or the cone projection non-finite.
+fn finite_impulse<T: Real>(p: Vector3<T>, regime: Regime) -> Result<(Vector3<T>, Regime)> {
+    if p.iter().all(|x| x.is_finite()) {
+        Ok((p, regime))
+    } else {
+        Err(Error::Singular)
     }
 }
 
