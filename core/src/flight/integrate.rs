@@ -11,7 +11,7 @@
 use super::events::{Landing, Step, Tracker};
 use crate::aero::{Rhs, State};
 use crate::error::{Error, Result};
-use crate::real::{Real, lit};
+use crate::real::{Real, larger, lit, smaller};
 
 /// Work done by a flight: force evaluations and steps.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -67,7 +67,7 @@ pub(crate) fn fixed<T: Real, R: Rhs<T>>(
     loop {
         // t = n·h (not a running sum: no drift in f32 over thousands of steps).
         let t = lit::<T>(f64::from(n)) * h;
-        let hh = h.min(limit - t);
+        let hh = smaller(h, limit - t);
         if !(hh > T::zero()) {
             return Err(Error::TimeLimit);
         }
@@ -100,8 +100,8 @@ pub(crate) fn fixed<T: Real, R: Rhs<T>>(
             f1: &f1,
             mid: None,
         };
-        if let Some(landing) = tracker.on_step(t, &step)? {
-            return Ok(landing);
+        if let Some(th) = tracker.on_step(t, &step)? {
+            return Ok(Landing::in_step(t, th, &step));
         }
         y = y1;
         f0 = f1;
@@ -180,7 +180,7 @@ pub(crate) fn dormand_prince<T: Real, R: Rhs<T>>(
     let mut k1 = rhs.eval(&y);
     stats.force_evaluations = 1;
     let mut t = T::zero();
-    let mut h = cfg.initial_step.min(cfg.max_step);
+    let mut h = smaller(cfg.initial_step, cfg.max_step);
     let mut rejected_last = false;
     let (safety, grow, shrink) = (lit::<T>(0.9), lit::<T>(5.0), lit::<T>(0.2));
     let eps16 = T::default_epsilon() * lit(16.0);
@@ -192,7 +192,7 @@ pub(crate) fn dormand_prince<T: Real, R: Rhs<T>>(
         if !(remaining > T::zero()) {
             return Err(Error::TimeLimit);
         }
-        h = h.min(remaining);
+        h = smaller(h, remaining);
         let k2 = rhs.eval(&combine(&y, h, A2, [&k1]));
         let k3 = rhs.eval(&combine(&y, h, A3, [&k1, &k2]));
         let k4 = rhs.eval(&combine(&y, h, A4, [&k1, &k2, &k3]));
@@ -205,7 +205,7 @@ pub(crate) fn dormand_prince<T: Real, R: Rhs<T>>(
         let e = combine(&[T::zero(); 7], h, E, [&k1, &k3, &k4, &k5, &k6, &k7]);
         let mut err = T::zero();
         for ((ei, a), b) in e.iter().zip(y.iter()).zip(y1.iter()) {
-            let scale = cfg.atol + cfg.rtol * a.abs().max(b.abs());
+            let scale = cfg.atol + cfg.rtol * larger(a.abs(), b.abs());
             let r = ei.abs() / scale;
             // `!(r <= err)` also propagates NaN into a rejection.
             if !(r <= err) {
@@ -239,32 +239,32 @@ pub(crate) fn dormand_prince<T: Real, R: Rhs<T>>(
                 }
             }
             stats.steps = stats.steps.saturating_add(1);
-            if let Some(landing) = tracker.on_step(t, &step)? {
-                return Ok(landing);
+            if let Some(th) = tracker.on_step(t, &step)? {
+                return Ok(Landing::in_step(t, th, &step));
             }
             t += h;
             y = y1;
             k1 = k7;
             let mut factor = if err > T::zero() {
-                (safety * inv_root_3_16(err)).min(grow)
+                smaller(safety * inv_root_3_16(err), grow)
             } else {
                 grow
             };
             if rejected_last {
-                factor = factor.min(T::one());
+                factor = smaller(factor, T::one());
             }
-            h = (h * factor.max(shrink)).min(cfg.max_step);
+            h = smaller(h * larger(factor, shrink), cfg.max_step);
             rejected_last = false;
         } else {
             stats.rejected_steps = stats.rejected_steps.saturating_add(1);
             let factor = if err.is_finite() {
-                (safety * inv_root_3_16(err)).max(shrink)
+                larger(safety * inv_root_3_16(err), shrink)
             } else {
                 shrink
             };
-            h *= factor.min(safety);
+            h *= smaller(factor, safety);
             rejected_last = true;
-            if !(h > eps16 * t.max(T::one())) {
+            if !(h > eps16 * larger(t, T::one())) {
                 return Err(Error::StepSizeUnderflow);
             }
         }

@@ -33,7 +33,7 @@
 //! stops at rolling.
 
 use super::surface::{PENNER_RESTITUTION_0, Turf};
-use crate::real::{Real, lit};
+use crate::real::{Real, larger, lit, smaller};
 use nalgebra::Vector3;
 
 /// Penner's crater tilt at the reference impact (rad): 15.4°.
@@ -103,11 +103,11 @@ pub(crate) fn rebound<T: Real>(
     turf: &Turf<T>,
     radius_m: T,
 ) -> Rebound<T> {
-    let vn = (-velocity.dot(n)).max(T::zero());
+    let vn = larger(-velocity.dot(n), T::zero());
     let vt = velocity + n * vn;
     let t = tangent_direction(&vt, spin, n);
     let b = t.cross(n);
-    let vt = vt.dot(&t).max(T::zero());
+    let vt = larger(vt.dot(&t), T::zero());
     let w = spin.dot(&b);
     // (No `hypot`: libm's single-precision one works in f64, software on a Cortex-M4F.)
     let speed = (vt * vt + vn * vn).sqrt();
@@ -117,11 +117,11 @@ pub(crate) fn rebound<T: Real>(
         * (speed / lit::<T>(CRATER_REFERENCE_SPEED_MPS))
         * (phi / lit::<T>(CRATER_REFERENCE_ANGLE_RAD));
     // Faded out below the reference normal speed (see the module docs).
-    let fade = (vn / lit::<T>(CRATER_REFERENCE_NORMAL_SPEED_MPS)).min(T::one());
-    let tilt = (tilt * fade).min(phi).max(T::zero());
+    let fade = smaller(vn / lit::<T>(CRATER_REFERENCE_NORMAL_SPEED_MPS), T::one());
+    let tilt = larger(smaller(tilt * fade, phi), T::zero());
     let (s, c) = crate::geometry::sin_cos(tilt);
     let u = vt * c - vn * s;
-    let vn = (vt * s + vn * c).max(T::zero());
+    let vn = larger(vt * s + vn * c, T::zero());
     let e = restitution(vn, turf.restitution);
     let r = radius_m;
     let slip = u + r * w;

@@ -21,7 +21,7 @@ pub mod surface;
 
 use crate::error::{Error, Field, Reason, Result};
 use crate::flight::{Recorder, Stats};
-use crate::real::{Real, lit};
+use crate::real::{Real, larger, lit};
 use crate::validate::finite_vector;
 use nalgebra::Vector3;
 pub use surface::{Surface, Turf};
@@ -227,7 +227,7 @@ fn low_hop<T: Real, H: Hopper<T>>(
     let spin0 = from.spin.norm();
     let spin_at = |tau: T, rate0: T, jerk: T| {
         if spin0 > T::zero() {
-            let s = (spin0 + rate0 * tau + jerk * tau * tau * half).max(T::zero());
+            let s = larger(spin0 + rate0 * tau + jerk * tau * tau * half, T::zero());
             from.spin * (s / spin0)
         } else {
             from.spin

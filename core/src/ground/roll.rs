@@ -15,7 +15,7 @@
 //! rolls on until [`ROLL_TIME_CAP_S`].
 
 use crate::flight::{Recorder, Sample};
-use crate::real::{Real, lit, to_f64};
+use crate::real::{Real, lit, smaller, to_f64};
 use nalgebra::Vector3;
 
 /// The longest roll simulated (s): a ball still rolling then ends as
@@ -124,7 +124,7 @@ impl<T: Real> Roll<'_, '_, T> {
                     resist
                 };
                 let ts = if denom > T::zero() {
-                    (s / denom).min(h)
+                    smaller(s / denom, h)
                 } else {
                     h
                 };
