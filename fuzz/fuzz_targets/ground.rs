@@ -133,6 +133,9 @@ fn run<T: Real>(b: &mut Bytes<'_>) -> Result<()> {
     } else {
         None
     };
+    if std::env::var_os("CARRY_FUZZ_DEBUG").is_some() {
+        eprintln!("{recorder:?} f32={}", core::mem::size_of::<T>() == 4);
+    }
     let out = match scene
         .prepare(&ball)?
         .fly(&motion, &integrator, recorder.as_mut())
@@ -159,7 +162,11 @@ fn run<T: Real>(b: &mut Bytes<'_>) -> Result<()> {
     assert!(g.time_to_rest_s >= out.flight_time_s, "{g:?}");
     assert!(g.total_m >= T::zero() && g.bounces <= MAX_BOUNCES);
     if let Some(r) = recorder {
-        assert!(r.samples().windows(2).all(|w| w[1].time_s >= w[0].time_s));
+        assert!(
+            r.samples().windows(2).all(|w| w[1].time_s >= w[0].time_s),
+            "samples out of time order: {:?}",
+            r.samples().iter().map(|s| s.time_s).collect::<Vec<_>>()
+        );
         for s in r.samples() {
             assert!(
                 s.position_m

@@ -338,24 +338,36 @@ impl<'r, 'b, T: Real> Tracker<'r, 'b, T> {
             return;
         };
         let h = step.h;
-        let end = landing.unwrap_or_else(T::one);
         let offset = self.time_offset;
+        // The landing's time, computed once: the samples before it are compared with it in
+        // time (not as fractions of the step), so they stay in time order even when the
+        // landing is within rounding of a sample (a fuzz find: a landing at t ≈ 1e-285 s).
+        let landing_time = landing.map(|th| t0 + th * h + offset);
         while !rec.full {
             let ts = lit::<T>(f64::from(self.next_sample)) * rec.interval_s;
+            if ts < offset {
+                // Before this hop began (the first index after the offset rounded down: a
+                // fuzz find with a 5e243 s interval). The last index repeats its time.
+                if self.next_sample == u32::MAX {
+                    break;
+                }
+                self.next_sample += 1;
+                continue;
+            }
             let th = (ts - offset - t0) / h;
-            if th > end || (landing.is_some() && th >= end) {
+            let past = match landing_time {
+                Some(tl) => !(ts < tl),
+                None => th > T::one(),
+            };
+            if past {
                 break;
             }
             let th = larger(th, T::zero());
             rec.push(Sample::new(ts, &step.state_at(th), &self.axis));
             self.next_sample = self.next_sample.saturating_add(1);
         }
-        if let Some(th) = landing {
-            rec.push(Sample::new(
-                t0 + th * h + offset,
-                &step.state_at(th),
-                &self.axis,
-            ));
+        if let (Some(th), Some(tl)) = (landing, landing_time) {
+            rec.push(Sample::new(tl, &step.state_at(th), &self.axis));
         }
     }
 }
