@@ -10,8 +10,7 @@ use crate::{
     CarryClubF32, CarryClubF64, CarryDeliveryF32, CarryDeliveryF64, CarryFlightInputF32,
     CarryFlightInputF64, CarryFlightResultF32, CarryFlightResultF64, CarryImpactInputF32,
     CarryImpactInputF64, CarryImpactResultF32, CarryImpactResultF64, CarrySampleF32,
-    CarrySampleF64, CarryShotInputF32, CarryShotInputF64, CarryShotResultF32,
-    CarryShotResultF64,
+    CarrySampleF64, CarryShotInputF32, CarryShotInputF64, CarryShotResultF32, CarryShotResultF64,
 };
 use carry_core::presets::Preset;
 use carry_core::real::Real;
@@ -98,7 +97,10 @@ pub unsafe extern "C" fn carry_club_preset_f64(
 /// # Safety
 /// `out` is NULL or points to a writable club.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn carry_club_preset_index_f32(index: u32, out: *mut CarryClubF32) -> CarryError {
+pub unsafe extern "C" fn carry_club_preset_index_f32(
+    index: u32,
+    out: *mut CarryClubF32,
+) -> CarryError {
     preset_club(preset_at(index), out)
 }
 
@@ -107,7 +109,10 @@ pub unsafe extern "C" fn carry_club_preset_index_f32(index: u32, out: *mut Carry
 /// # Safety
 /// `out` is NULL or points to a writable club.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn carry_club_preset_index_f64(index: u32, out: *mut CarryClubF64) -> CarryError {
+pub unsafe extern "C" fn carry_club_preset_index_f64(
+    index: u32,
+    out: *mut CarryClubF64,
+) -> CarryError {
     preset_club(preset_at(index), out)
 }
 

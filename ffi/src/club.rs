@@ -62,8 +62,8 @@ pub struct CarryBall<T> {
 
 /// The presets' names as C strings, in `carry_core::PRESETS` order.
 pub const PRESET_NAMES: [&CStr; 13] = [
-    c"driver", c"3wood", c"hybrid", c"4iron", c"5iron", c"6iron", c"7iron", c"8iron",
-    c"9iron", c"pw", c"gw", c"sw", c"lw",
+    c"driver", c"3wood", c"hybrid", c"4iron", c"5iron", c"6iron", c"7iron", c"8iron", c"9iron",
+    c"pw", c"gw", c"sw", c"lw",
 ];
 
 impl<T: Real> CarryClub<T> {
@@ -77,7 +77,9 @@ impl<T: Real> CarryClub<T> {
         };
         Self {
             mass_kg: s.mass_kg,
-            inertia_kgm2: [i.m11, i.m12, i.m13, i.m21, i.m22, i.m23, i.m31, i.m32, i.m33],
+            inertia_kgm2: [
+                i.m11, i.m12, i.m13, i.m21, i.m22, i.m23, i.m31, i.m32, i.m33,
+            ],
             loft_rad: s.loft_rad,
             roll_radius_m: s.roll_radius_m,
             bulge_radius_m: s.bulge_radius_m,

@@ -60,9 +60,15 @@ pub unsafe extern "C" fn carry_ball_default_f64(out: *mut crate::CarryBallF64) -
 /// # Safety
 /// `out` is NULL or points to a writable struct.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn carry_delivery_default_f32(out: *mut crate::CarryDeliveryF32) -> CarryError {
+pub unsafe extern "C" fn carry_delivery_default_f32(
+    out: *mut crate::CarryDeliveryF32,
+) -> CarryError {
     // SAFETY: the caller's contract, forwarded.
-    unsafe { init(out, || crate::CarryDelivery::square(&crate::club::default_club())) }
+    unsafe {
+        init(out, || {
+            crate::CarryDelivery::square(&crate::club::default_club())
+        })
+    }
 }
 
 /// Fills `*out` with a delivery: 45 m/s, square, centred, the default club's static loft; double precision.
@@ -70,9 +76,15 @@ pub unsafe extern "C" fn carry_delivery_default_f32(out: *mut crate::CarryDelive
 /// # Safety
 /// `out` is NULL or points to a writable struct.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn carry_delivery_default_f64(out: *mut crate::CarryDeliveryF64) -> CarryError {
+pub unsafe extern "C" fn carry_delivery_default_f64(
+    out: *mut crate::CarryDeliveryF64,
+) -> CarryError {
     // SAFETY: the caller's contract, forwarded.
-    unsafe { init(out, || crate::CarryDelivery::square(&crate::club::default_club())) }
+    unsafe {
+        init(out, || {
+            crate::CarryDelivery::square(&crate::club::default_club())
+        })
+    }
 }
 
 /// Fills `*out` with a launch: 167 mph, 10.9°, 2686 rpm backspin (the CLI's `carry flight`); single precision.
@@ -120,7 +132,9 @@ pub unsafe extern "C" fn carry_scene_default_f64(out: *mut crate::CarrySceneF64)
 /// # Safety
 /// `out` is NULL or points to a writable struct.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn carry_settings_default_f32(out: *mut crate::CarrySettingsF32) -> CarryError {
+pub unsafe extern "C" fn carry_settings_default_f32(
+    out: *mut crate::CarrySettingsF32,
+) -> CarryError {
     // SAFETY: the caller's contract, forwarded.
     unsafe { init(out, || crate::CarrySettings::default()) }
 }
@@ -130,7 +144,9 @@ pub unsafe extern "C" fn carry_settings_default_f32(out: *mut crate::CarrySettin
 /// # Safety
 /// `out` is NULL or points to a writable struct.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn carry_settings_default_f64(out: *mut crate::CarrySettingsF64) -> CarryError {
+pub unsafe extern "C" fn carry_settings_default_f64(
+    out: *mut crate::CarrySettingsF64,
+) -> CarryError {
     // SAFETY: the caller's contract, forwarded.
     unsafe { init(out, || crate::CarrySettings::default()) }
 }
@@ -140,7 +156,9 @@ pub unsafe extern "C" fn carry_settings_default_f64(out: *mut crate::CarrySettin
 /// # Safety
 /// `out` is NULL or points to a writable struct.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn carry_impact_input_default_f32(out: *mut crate::CarryImpactInputF32) -> CarryError {
+pub unsafe extern "C" fn carry_impact_input_default_f32(
+    out: *mut crate::CarryImpactInputF32,
+) -> CarryError {
     // SAFETY: the caller's contract, forwarded.
     unsafe { init(out, || crate::CarryImpactInput::default()) }
 }
@@ -150,7 +168,9 @@ pub unsafe extern "C" fn carry_impact_input_default_f32(out: *mut crate::CarryIm
 /// # Safety
 /// `out` is NULL or points to a writable struct.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn carry_impact_input_default_f64(out: *mut crate::CarryImpactInputF64) -> CarryError {
+pub unsafe extern "C" fn carry_impact_input_default_f64(
+    out: *mut crate::CarryImpactInputF64,
+) -> CarryError {
     // SAFETY: the caller's contract, forwarded.
     unsafe { init(out, || crate::CarryImpactInput::default()) }
 }
@@ -160,7 +180,9 @@ pub unsafe extern "C" fn carry_impact_input_default_f64(out: *mut crate::CarryIm
 /// # Safety
 /// `out` is NULL or points to a writable struct.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn carry_flight_input_default_f32(out: *mut crate::CarryFlightInputF32) -> CarryError {
+pub unsafe extern "C" fn carry_flight_input_default_f32(
+    out: *mut crate::CarryFlightInputF32,
+) -> CarryError {
     // SAFETY: the caller's contract, forwarded.
     unsafe { init(out, || crate::CarryFlightInput::default()) }
 }
@@ -170,7 +192,9 @@ pub unsafe extern "C" fn carry_flight_input_default_f32(out: *mut crate::CarryFl
 /// # Safety
 /// `out` is NULL or points to a writable struct.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn carry_flight_input_default_f64(out: *mut crate::CarryFlightInputF64) -> CarryError {
+pub unsafe extern "C" fn carry_flight_input_default_f64(
+    out: *mut crate::CarryFlightInputF64,
+) -> CarryError {
     // SAFETY: the caller's contract, forwarded.
     unsafe { init(out, || crate::CarryFlightInput::default()) }
 }
@@ -180,7 +204,9 @@ pub unsafe extern "C" fn carry_flight_input_default_f64(out: *mut crate::CarryFl
 /// # Safety
 /// `out` is NULL or points to a writable struct.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn carry_shot_input_default_f32(out: *mut crate::CarryShotInputF32) -> CarryError {
+pub unsafe extern "C" fn carry_shot_input_default_f32(
+    out: *mut crate::CarryShotInputF32,
+) -> CarryError {
     // SAFETY: the caller's contract, forwarded.
     unsafe { init(out, || crate::CarryShotInput::default()) }
 }
@@ -190,7 +216,9 @@ pub unsafe extern "C" fn carry_shot_input_default_f32(out: *mut crate::CarryShot
 /// # Safety
 /// `out` is NULL or points to a writable struct.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn carry_shot_input_default_f64(out: *mut crate::CarryShotInputF64) -> CarryError {
+pub unsafe extern "C" fn carry_shot_input_default_f64(
+    out: *mut crate::CarryShotInputF64,
+) -> CarryError {
     // SAFETY: the caller's contract, forwarded.
     unsafe { init(out, || crate::CarryShotInput::default()) }
 }

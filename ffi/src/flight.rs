@@ -5,11 +5,11 @@ use crate::club::CarryBall;
 use crate::error::{CARRY_ERR_BUFFER_TOO_SMALL, CARRY_ERR_NULL_POINTER, Result};
 use crate::scene::CarryScene;
 use crate::settings::CarrySettings;
+use carry_core::Launch;
 use carry_core::flight::{FlightOutcome, Recorder, Sample, SampleSink};
 use carry_core::ground::RunEnd;
 use carry_core::real::{Real, lit};
 use carry_core::units::{deg, mph, rpm};
-use carry_core::Launch;
 
 /// A launch as a launch monitor measures it (m/s, rad, rad/s).
 #[repr(C)]

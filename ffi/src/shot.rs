@@ -2,7 +2,7 @@
 
 use crate::club::{CarryBall, CarryClub};
 use crate::error::Result;
-use crate::flight::{Buffer, CarryFlightResult, CARRY_DEFAULT_RECORD_INTERVAL_S};
+use crate::flight::{Buffer, CARRY_DEFAULT_RECORD_INTERVAL_S, CarryFlightResult};
 use crate::impact::{CarryDelivery, CarryImpactResult};
 use crate::scene::CarryScene;
 use crate::settings::CarrySettings;
@@ -71,7 +71,14 @@ pub fn run<T: Real>(
         None => shot::play(&club, &ball, &delivery, &scene, &fidelity, None)?,
         Some(b) => {
             let mut recorder = Recorder::with_sink(input.record_interval_s, b)?;
-            shot::play(&club, &ball, &delivery, &scene, &fidelity, Some(&mut recorder))?
+            shot::play(
+                &club,
+                &ball,
+                &delivery,
+                &scene,
+                &fidelity,
+                Some(&mut recorder),
+            )?
         }
     };
     Ok(CarryShotResult {

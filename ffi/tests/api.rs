@@ -55,7 +55,11 @@ macro_rules! api {
                 n: &mut usize,
                 o: &mut CarryFlightResult<Self>,
             ) -> CarryError {
-                let p = if s.is_empty() { null_mut() } else { s.as_mut_ptr() };
+                let p = if s.is_empty() {
+                    null_mut()
+                } else {
+                    s.as_mut_ptr()
+                };
                 // SAFETY: valid references; `p` holds `s.len()` samples.
                 unsafe { $flight(i, p, s.len(), n, o) }
             }
@@ -65,7 +69,11 @@ macro_rules! api {
                 n: &mut usize,
                 o: &mut CarryShotResult<Self>,
             ) -> CarryError {
-                let p = if s.is_empty() { null_mut() } else { s.as_mut_ptr() };
+                let p = if s.is_empty() {
+                    null_mut()
+                } else {
+                    s.as_mut_ptr()
+                };
                 // SAFETY: valid references; `p` holds `s.len()` samples.
                 unsafe { $shot(i, p, s.len(), n, o) }
             }
@@ -76,8 +84,22 @@ macro_rules! api {
         }
     };
 }
-api!(f32, |x: f32| u64::from(x.to_bits()), carry_impact_f32, carry_flight_f32, carry_shot_f32, carry_shot_input_default_f32);
-api!(f64, f64::to_bits, carry_impact_f64, carry_flight_f64, carry_shot_f64, carry_shot_input_default_f64);
+api!(
+    f32,
+    |x: f32| u64::from(x.to_bits()),
+    carry_impact_f32,
+    carry_flight_f32,
+    carry_shot_f32,
+    carry_shot_input_default_f32
+);
+api!(
+    f64,
+    f64::to_bits,
+    carry_impact_f64,
+    carry_flight_f64,
+    carry_shot_f64,
+    carry_shot_input_default_f64
+);
 
 /// An all-zero struct (every field of the C API's structs is a float or an integer).
 fn zeroed<S>() -> S {
@@ -96,7 +118,9 @@ fn impact_golden<T: Api>() {
     for case in golden::impact_cases() {
         for (variant, solver, compliant) in golden::variants() {
             let core_solver = cases::VARIANTS.iter().find(|v| v.0 == variant).map(|v| v.1);
-            let core = case.input.outputs_with::<T>(core_solver.unwrap_or_default(), compliant);
+            let core = case
+                .input
+                .outputs_with::<T>(core_solver.unwrap_or_default(), compliant);
             let input = golden::impact_input::<T>(&case.input, solver, compliant);
             let mut out = zeroed::<CarryImpactResult<T>>();
             let code = T::impact(&input, &mut out);
@@ -119,12 +143,25 @@ fn flight_golden<T: Api>() {
     for case in golden::flight_cases() {
         let mut runs: Vec<(String, Integrator<T>, u32, AeroModel<T>)> = cases::integrators::<T>()
             .iter()
-            .map(|(name, i)| ((*name).to_owned(), *i, CARRY_AERO_QUINTAVALLA, AeroModel::quintavalla()))
+            .map(|(name, i)| {
+                (
+                    (*name).to_owned(),
+                    *i,
+                    CARRY_AERO_QUINTAVALLA,
+                    AeroModel::quintavalla(),
+                )
+            })
             .collect();
-        runs.push(("tour2023".into(), Integrator::default(), CARRY_AERO_TOUR2023, AeroModel::tour_2023()));
+        runs.push((
+            "tour2023".into(),
+            Integrator::default(),
+            CARRY_AERO_TOUR2023,
+            AeroModel::tour_2023(),
+        ));
         for (name, integrator, aero, model) in runs {
             let core = case.input.outputs_with::<T>(&integrator, model);
-            let input = golden::flight_input::<T>(&case.input, aero, golden::c_settings(&integrator));
+            let input =
+                golden::flight_input::<T>(&case.input, aero, golden::c_settings(&integrator));
             let mut out = zeroed::<CarryFlightResult<T>>();
             let mut count = 0;
             let code = T::flight(&input, &mut [], &mut count, &mut out);
@@ -162,15 +199,29 @@ fn shot_with_trajectory<T: Api>() {
     let club = input.club.spec().and_then(|s| Ok(s.validate()?));
     let ball = Ball::<T>::standard();
     let scene = input.scene.scene().and_then(|s| Ok(s.prepare(&ball)?));
-    let (Ok(club), Ok(scene)) = (club, scene) else { panic!("default inputs") };
+    let (Ok(club), Ok(scene)) = (club, scene) else {
+        panic!("default inputs")
+    };
     let mut buf: heapless::Vec<Sample<T>, 256> = heapless::Vec::new();
-    let Ok(mut rec) = Recorder::new(input.record_interval_s, &mut buf) else { panic!() };
-    let core = shot::play(&club, &ball, &input.delivery.delivery(), &scene, &Fidelity::default(), Some(&mut rec));
+    let Ok(mut rec) = Recorder::new(input.record_interval_s, &mut buf) else {
+        panic!()
+    };
+    let core = shot::play(
+        &club,
+        &ball,
+        &input.delivery.delivery(),
+        &scene,
+        &Fidelity::default(),
+        Some(&mut rec),
+    );
     let Ok(core) = core else { panic!("core shot") };
     let mut samples = vec![zeroed::<CarrySample<T>>(); 256];
     let mut count = 0;
     let mut out = zeroed::<CarryShotResult<T>>();
-    assert_eq!(T::shot(&input, &mut samples, &mut count, &mut out), CARRY_OK);
+    assert_eq!(
+        T::shot(&input, &mut samples, &mut count, &mut out),
+        CARRY_OK
+    );
     assert_eq!(out.impact, CarryImpactResult::from_outcome(&core.impact));
     assert_eq!(out.flight, CarryFlightResult::from_outcome(&core.flight));
     assert_eq!(out.flight.has_ground, 1);
@@ -178,7 +229,12 @@ fn shot_with_trajectory<T: Api>() {
     for (c, s) in samples.iter().zip(&buf) {
         let flat = |x: &CarrySample<T>| {
             let mut v = vec![x.time_s];
-            v.extend(x.position_m.iter().chain(&x.velocity_mps).chain(&x.spin_radps));
+            v.extend(
+                x.position_m
+                    .iter()
+                    .chain(&x.velocity_mps)
+                    .chain(&x.spin_radps),
+            );
             v
         };
         let core_sample = CarrySample {
@@ -192,7 +248,10 @@ fn shot_with_trajectory<T: Api>() {
     // A buffer of 3: the same result, 3 samples, and the code says the buffer was small.
     let mut small = vec![zeroed::<CarrySample<T>>(); 3];
     let mut out_small = zeroed::<CarryShotResult<T>>();
-    assert_eq!(T::shot(&input, &mut small, &mut count, &mut out_small), CARRY_ERR_BUFFER_TOO_SMALL);
+    assert_eq!(
+        T::shot(&input, &mut small, &mut count, &mut out_small),
+        CARRY_ERR_BUFFER_TOO_SMALL
+    );
     assert_eq!(count, 3);
     assert_eq!(out_small.flight.recording_full, 1);
     assert_eq!(out_small.flight.carry_m, out.flight.carry_m);
@@ -229,21 +288,45 @@ fn null_pointers_are_reported() {
     unsafe {
         assert_eq!(carry_impact_f32(null(), &mut r), CARRY_ERR_NULL_POINTER);
         assert_eq!(carry_impact_f32(&i, null_mut()), CARRY_ERR_NULL_POINTER);
-        assert_eq!(carry_impact_input_default_f32(null_mut()), CARRY_ERR_NULL_POINTER);
+        assert_eq!(
+            carry_impact_input_default_f32(null_mut()),
+            CARRY_ERR_NULL_POINTER
+        );
         assert_eq!(carry_impact_input_default_f32(&mut i), CARRY_OK);
         assert_eq!(carry_impact_f32(&i, &mut r), CARRY_OK);
         let f = CarryFlightInputF64::default();
         let mut fr = zeroed::<CarryFlightResultF64>();
         let mut s = [zeroed::<CarrySampleF64>(); 4];
-        assert_eq!(carry_flight_f64(null(), null_mut(), 0, null_mut(), &mut fr), CARRY_ERR_NULL_POINTER);
-        assert_eq!(carry_flight_f64(&f, null_mut(), 0, null_mut(), null_mut()), CARRY_ERR_NULL_POINTER);
+        assert_eq!(
+            carry_flight_f64(null(), null_mut(), 0, null_mut(), &mut fr),
+            CARRY_ERR_NULL_POINTER
+        );
+        assert_eq!(
+            carry_flight_f64(&f, null_mut(), 0, null_mut(), null_mut()),
+            CARRY_ERR_NULL_POINTER
+        );
         // A buffer needs a count.
-        assert_eq!(carry_flight_f64(&f, s.as_mut_ptr(), 4, null_mut(), &mut fr), CARRY_ERR_NULL_POINTER);
-        assert_eq!(carry_flight_f64(&f, null_mut(), 0, null_mut(), &mut fr), CARRY_OK);
+        assert_eq!(
+            carry_flight_f64(&f, s.as_mut_ptr(), 4, null_mut(), &mut fr),
+            CARRY_ERR_NULL_POINTER
+        );
+        assert_eq!(
+            carry_flight_f64(&f, null_mut(), 0, null_mut(), &mut fr),
+            CARRY_OK
+        );
         let mut c = zeroed::<CarryClubF32>();
-        assert_eq!(carry_club_preset_f32(null(), &mut c), CARRY_ERR_NULL_POINTER);
-        assert_eq!(carry_club_preset_f32(c"driver".as_ptr(), null_mut()), CARRY_ERR_NULL_POINTER);
-        assert_eq!(carry_shot_f32(null(), null_mut(), 0, null_mut(), null_mut()), CARRY_ERR_NULL_POINTER);
+        assert_eq!(
+            carry_club_preset_f32(null(), &mut c),
+            CARRY_ERR_NULL_POINTER
+        );
+        assert_eq!(
+            carry_club_preset_f32(c"driver".as_ptr(), null_mut()),
+            CARRY_ERR_NULL_POINTER
+        );
+        assert_eq!(
+            carry_shot_f32(null(), null_mut(), 0, null_mut(), null_mut()),
+            CARRY_ERR_NULL_POINTER
+        );
     }
 }
 
@@ -287,8 +370,14 @@ fn bad_input_gives_the_right_code() {
     let mut c = zeroed::<CarryClubF64>();
     // SAFETY: valid pointers.
     unsafe {
-        assert_eq!(carry_club_preset_f64(c"putter".as_ptr(), &mut c), CARRY_ERR_UNKNOWN_NAME);
-        assert_eq!(carry_club_preset_index_f64(carry_club_preset_count(), &mut c), CARRY_ERR_UNKNOWN_NAME);
+        assert_eq!(
+            carry_club_preset_f64(c"putter".as_ptr(), &mut c),
+            CARRY_ERR_UNKNOWN_NAME
+        );
+        assert_eq!(
+            carry_club_preset_index_f64(carry_club_preset_count(), &mut c),
+            CARRY_ERR_UNKNOWN_NAME
+        );
         assert!(carry_club_preset_name(carry_club_preset_count()).is_null());
     }
 }

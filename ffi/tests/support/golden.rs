@@ -331,3 +331,15 @@ pub fn flight_outputs<T: Real>(r: &CarryFlightResult<T>) -> [T; FLIGHT_OUTPUTS] 
     ]
 }
 
+/// The golden files' f64 reference carry of each flight case: (name, carry in m).
+pub fn flight_reference() -> Vec<(String, f64)> {
+    let root = read_json(&dir().join("flight.json"));
+    let cases = root["cases"].as_array().cloned().unwrap_or_default();
+    cases
+        .iter()
+        .map(|c| {
+            let name = c["name"].as_str().unwrap_or("?").to_owned();
+            (name, num(&c["expected"]["carry_m"]))
+        })
+        .collect()
+}
