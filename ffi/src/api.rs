@@ -4,7 +4,7 @@
 use crate::club::{PRESET_NAMES, preset_at, preset_named};
 use crate::error::{CARRY_OK, CarryError, Result};
 use crate::flight::{self, CarrySample};
-use crate::ptr::{non_null, read, write};
+use crate::ptr::{non_null, with, write};
 use crate::{CarryClub, CarryDelivery, impact, shot};
 use crate::{
     CarryClubF32, CarryClubF64, CarryDeliveryF32, CarryDeliveryF64, CarryFlightInputF32,
@@ -153,8 +153,7 @@ unsafe fn impact_entry<T: Real>(
     code((|| {
         let out = non_null(out)?;
         // SAFETY: NULL or readable by the caller's contract.
-        let input = unsafe { read(input) }?;
-        let result = impact::run(&input)?;
+        let result = unsafe { with(input, impact::run) }?;
         // SAFETY: not NULL; writable by the caller's contract.
         unsafe { write(out, result) };
         Ok(())
@@ -173,17 +172,20 @@ unsafe fn flight_entry<T: Real>(
 ) -> CarryError {
     code((|| {
         let out = non_null(out)?;
-        // SAFETY: NULL or readable by the caller's contract.
-        let input = unsafe { read(input) }?;
         // SAFETY: the caller's contract on `samples`, `capacity` and `count`.
         let mut buffer = unsafe { flight::buffer(samples, capacity, count) }?;
-        let result = flight::run(&input, buffer.as_mut());
+        // SAFETY: NULL or readable by the caller's contract.
+        let full = unsafe {
+            with(input, |i| {
+                let result = flight::run(i, buffer.as_mut())?;
+                // SAFETY: not NULL; writable by the caller's contract.
+                write(out, result);
+                Ok(result.recording_full)
+            })
+        };
         // SAFETY: `count` NULL or writable.
         unsafe { flight::finish(buffer.as_ref(), count) };
-        let result = result?;
-        // SAFETY: not NULL; writable by the caller's contract.
-        unsafe { write(out, result) };
-        flight::full(buffer.as_ref(), result.recording_full)
+        flight::full(buffer.as_ref(), full?)
     })())
 }
 
@@ -198,17 +200,20 @@ unsafe fn shot_entry<T: Real>(
 ) -> CarryError {
     code((|| {
         let out = non_null(out)?;
-        // SAFETY: NULL or readable by the caller's contract.
-        let input = unsafe { read(input) }?;
         // SAFETY: the caller's contract on `samples`, `capacity` and `count`.
         let mut buffer = unsafe { flight::buffer(samples, capacity, count) }?;
-        let result = shot::run(&input, buffer.as_mut());
+        // SAFETY: NULL or readable by the caller's contract.
+        let full = unsafe {
+            with(input, |i| {
+                shot::run_with(i, buffer.as_mut(), |result| {
+                    // SAFETY: not NULL; writable by the caller's contract.
+                    write(out, result());
+                })
+            })
+        };
         // SAFETY: `count` NULL or writable.
         unsafe { flight::finish(buffer.as_ref(), count) };
-        let result = result?;
-        // SAFETY: not NULL; writable by the caller's contract.
-        unsafe { write(out, result) };
-        flight::full(buffer.as_ref(), result.flight.recording_full)
+        flight::full(buffer.as_ref(), u32::from(full?))
     })())
 }
 

@@ -22,7 +22,7 @@ unsafe fn init<T>(out: *mut T, value: impl FnOnce() -> T) -> CarryError {
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn carry_club_default_f32(out: *mut crate::CarryClubF32) -> CarryError {
     // SAFETY: the caller's contract, forwarded.
-    unsafe { init(out, || crate::club::default_club()) }
+    unsafe { init(out, crate::club::default_club) }
 }
 
 /// Fills `*out` with a club head: the `driver` preset with its calibrated compliant contact (the CLI's default club); double precision.
@@ -32,7 +32,7 @@ pub unsafe extern "C" fn carry_club_default_f32(out: *mut crate::CarryClubF32) -
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn carry_club_default_f64(out: *mut crate::CarryClubF64) -> CarryError {
     // SAFETY: the caller's contract, forwarded.
-    unsafe { init(out, || crate::club::default_club()) }
+    unsafe { init(out, crate::club::default_club) }
 }
 
 /// Fills `*out` with the standard ball (45.93 g, 42.672 mm); single precision.
@@ -42,7 +42,7 @@ pub unsafe extern "C" fn carry_club_default_f64(out: *mut crate::CarryClubF64) -
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn carry_ball_default_f32(out: *mut crate::CarryBallF32) -> CarryError {
     // SAFETY: the caller's contract, forwarded.
-    unsafe { init(out, || crate::CarryBall::standard()) }
+    unsafe { init(out, crate::CarryBall::standard) }
 }
 
 /// Fills `*out` with the standard ball (45.93 g, 42.672 mm); double precision.
@@ -52,7 +52,7 @@ pub unsafe extern "C" fn carry_ball_default_f32(out: *mut crate::CarryBallF32) -
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn carry_ball_default_f64(out: *mut crate::CarryBallF64) -> CarryError {
     // SAFETY: the caller's contract, forwarded.
-    unsafe { init(out, || crate::CarryBall::standard()) }
+    unsafe { init(out, crate::CarryBall::standard) }
 }
 
 /// Fills `*out` with a delivery: 45 m/s, square, centred, the default club's static loft; single precision.
@@ -94,7 +94,7 @@ pub unsafe extern "C" fn carry_delivery_default_f64(
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn carry_launch_default_f32(out: *mut crate::CarryLaunchF32) -> CarryError {
     // SAFETY: the caller's contract, forwarded.
-    unsafe { init(out, || crate::CarryLaunch::default()) }
+    unsafe { init(out, crate::CarryLaunch::default) }
 }
 
 /// Fills `*out` with a launch: 167 mph, 10.9°, 2686 rpm backspin (the CLI's `carry flight`); double precision.
@@ -104,7 +104,7 @@ pub unsafe extern "C" fn carry_launch_default_f32(out: *mut crate::CarryLaunchF3
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn carry_launch_default_f64(out: *mut crate::CarryLaunchF64) -> CarryError {
     // SAFETY: the caller's contract, forwarded.
-    unsafe { init(out, || crate::CarryLaunch::default()) }
+    unsafe { init(out, crate::CarryLaunch::default) }
 }
 
 /// Fills `*out` with a scene: all effects, `tour2023`, 1.225 kg/m³, no wind, landing at 0 m, no ground; single precision.
@@ -114,7 +114,7 @@ pub unsafe extern "C" fn carry_launch_default_f64(out: *mut crate::CarryLaunchF6
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn carry_scene_default_f32(out: *mut crate::CarrySceneF32) -> CarryError {
     // SAFETY: the caller's contract, forwarded.
-    unsafe { init(out, || crate::CarryScene::default()) }
+    unsafe { init(out, crate::CarryScene::default) }
 }
 
 /// Fills `*out` with a scene: all effects, `tour2023`, 1.225 kg/m³, no wind, landing at 0 m, no ground; double precision.
@@ -124,7 +124,7 @@ pub unsafe extern "C" fn carry_scene_default_f32(out: *mut crate::CarrySceneF32)
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn carry_scene_default_f64(out: *mut crate::CarrySceneF64) -> CarryError {
     // SAFETY: the caller's contract, forwarded.
-    unsafe { init(out, || crate::CarryScene::default()) }
+    unsafe { init(out, crate::CarryScene::default) }
 }
 
 /// Fills `*out` with numerical settings: reduced solver, Dormand–Prince at the precision's default tolerance; single precision.
@@ -136,7 +136,7 @@ pub unsafe extern "C" fn carry_settings_default_f32(
     out: *mut crate::CarrySettingsF32,
 ) -> CarryError {
     // SAFETY: the caller's contract, forwarded.
-    unsafe { init(out, || crate::CarrySettings::default()) }
+    unsafe { init(out, crate::CarrySettings::default) }
 }
 
 /// Fills `*out` with numerical settings: reduced solver, Dormand–Prince at the precision's default tolerance; double precision.
@@ -148,7 +148,7 @@ pub unsafe extern "C" fn carry_settings_default_f64(
     out: *mut crate::CarrySettingsF64,
 ) -> CarryError {
     // SAFETY: the caller's contract, forwarded.
-    unsafe { init(out, || crate::CarrySettings::default()) }
+    unsafe { init(out, crate::CarrySettings::default) }
 }
 
 /// Fills `*out` with an impact input (the CLI's `carry impact` defaults); single precision.
@@ -160,7 +160,7 @@ pub unsafe extern "C" fn carry_impact_input_default_f32(
     out: *mut crate::CarryImpactInputF32,
 ) -> CarryError {
     // SAFETY: the caller's contract, forwarded.
-    unsafe { init(out, || crate::CarryImpactInput::default()) }
+    unsafe { init(out, crate::CarryImpactInput::default) }
 }
 
 /// Fills `*out` with an impact input (the CLI's `carry impact` defaults); double precision.
@@ -172,7 +172,7 @@ pub unsafe extern "C" fn carry_impact_input_default_f64(
     out: *mut crate::CarryImpactInputF64,
 ) -> CarryError {
     // SAFETY: the caller's contract, forwarded.
-    unsafe { init(out, || crate::CarryImpactInput::default()) }
+    unsafe { init(out, crate::CarryImpactInput::default) }
 }
 
 /// Fills `*out` with a flight input (the CLI's `carry flight` defaults, 0.1 s samples); single precision.
@@ -184,7 +184,7 @@ pub unsafe extern "C" fn carry_flight_input_default_f32(
     out: *mut crate::CarryFlightInputF32,
 ) -> CarryError {
     // SAFETY: the caller's contract, forwarded.
-    unsafe { init(out, || crate::CarryFlightInput::default()) }
+    unsafe { init(out, crate::CarryFlightInput::default) }
 }
 
 /// Fills `*out` with a flight input (the CLI's `carry flight` defaults, 0.1 s samples); double precision.
@@ -196,7 +196,7 @@ pub unsafe extern "C" fn carry_flight_input_default_f64(
     out: *mut crate::CarryFlightInputF64,
 ) -> CarryError {
     // SAFETY: the caller's contract, forwarded.
-    unsafe { init(out, || crate::CarryFlightInput::default()) }
+    unsafe { init(out, crate::CarryFlightInput::default) }
 }
 
 /// Fills `*out` with a shot input (the CLI's `carry shot` defaults, 0.1 s samples); single precision.
@@ -208,7 +208,7 @@ pub unsafe extern "C" fn carry_shot_input_default_f32(
     out: *mut crate::CarryShotInputF32,
 ) -> CarryError {
     // SAFETY: the caller's contract, forwarded.
-    unsafe { init(out, || crate::CarryShotInput::default()) }
+    unsafe { init(out, crate::CarryShotInput::default) }
 }
 
 /// Fills `*out` with a shot input (the CLI's `carry shot` defaults, 0.1 s samples); double precision.
@@ -220,5 +220,5 @@ pub unsafe extern "C" fn carry_shot_input_default_f64(
     out: *mut crate::CarryShotInputF64,
 ) -> CarryError {
     // SAFETY: the caller's contract, forwarded.
-    unsafe { init(out, || crate::CarryShotInput::default()) }
+    unsafe { init(out, crate::CarryShotInput::default) }
 }

@@ -268,7 +268,8 @@ pub fn run<T: Real>(
     buffer: Option<&mut Buffer<T>>,
 ) -> Result<CarryFlightResult<T>> {
     let ball = input.ball.ball()?;
-    let scene = input.scene.scene()?.prepare(&ball)?;
+    let scene = input.scene.scene()?.prepare(&ball);
+    let scene = scene.as_ref().map_err(|e| *e)?;
     let motion = input.launch.launch().ball_motion()?;
     let integrator = input.settings.integrator()?;
     let out = match buffer {

@@ -178,10 +178,11 @@ impl<T: Real> Default for CarryImpactInput<T> {
 /// # Errors
 /// The core's errors; `CARRY_ERR_UNKNOWN_OPTION` for an unknown contact or solver.
 pub fn run<T: Real>(input: &CarryImpactInput<T>) -> Result<CarryImpactResult<T>> {
-    let club = input.club.spec()?.validate()?;
+    let club = input.club.spec()?.validate();
+    let club = club.as_ref().map_err(|e| *e)?;
     let ball = input.ball.ball()?;
     let solver = input.settings.solver()?;
-    let strike = input.delivery.delivery().strike(&club)?;
-    let out = impact::solve(&club, &ball, &strike, solver)?;
+    let strike = input.delivery.delivery().strike(club)?;
+    let out = impact::solve(club, &ball, &strike, solver)?;
     Ok(CarryImpactResult::from_outcome(&out))
 }

@@ -7,8 +7,8 @@ use crate::impact::{CarryDelivery, CarryImpactResult};
 use crate::scene::CarryScene;
 use crate::settings::CarrySettings;
 use carry_core::flight::Recorder;
+use carry_core::impact;
 use carry_core::real::{Real, lit};
-use carry_core::shot;
 
 /// What a shot needs. Start from `carry_shot_input_default_*`.
 #[repr(C)]
@@ -54,7 +54,9 @@ impl<T: Real> Default for CarryShotInput<T> {
     }
 }
 
-/// The shot of `input`, as the core's `shot::play` plays it.
+/// The shot of `input`: the steps of the core's `shot::play` (strike → impact → flight),
+/// spelled out so that the outcomes go straight into the C result (`play` returns them
+/// through two more copies; the results are the same, bit for bit: `tests/api.rs`).
 ///
 /// # Errors
 /// The core's errors; `CARRY_ERR_UNKNOWN_OPTION` for an unknown selector.
@@ -62,27 +64,46 @@ pub fn run<T: Real>(
     input: &CarryShotInput<T>,
     buffer: Option<&mut Buffer<T>>,
 ) -> Result<CarryShotResult<T>> {
-    let club = input.club.spec()?.validate()?;
+    let mut result = None;
+    run_with(input, buffer, |r| result = Some(r()))?;
+    result.ok_or(crate::error::CARRY_ERR_OTHER)
+}
+
+/// [`run`], handing `emit` a maker of the result so that the caller builds it in place
+/// (on the target every move of a large struct is a copy: 4 % of a full f32 shot, docs/ffi.md).
+/// Returns whether the sample buffer filled up.
+///
+/// # Errors
+/// As [`run`].
+#[inline(always)]
+pub fn run_with<T: Real>(
+    input: &CarryShotInput<T>,
+    buffer: Option<&mut Buffer<T>>,
+    emit: impl FnOnce(&dyn Fn() -> CarryShotResult<T>),
+) -> Result<bool> {
+    let club = input.club.spec()?.validate();
+    let club = club.as_ref().map_err(|e| *e)?;
     let ball = input.ball.ball()?;
-    let scene = input.scene.scene()?.prepare(&ball)?;
-    let fidelity = input.settings.fidelity()?;
-    let delivery = input.delivery.delivery();
-    let out = match buffer {
-        None => shot::play(&club, &ball, &delivery, &scene, &fidelity, None)?,
+    let scene = input.scene.scene()?.prepare(&ball);
+    let scene = scene.as_ref().map_err(|e| *e)?;
+    let solver = input.settings.solver()?;
+    let integrator = input.settings.integrator()?;
+    let strike = input.delivery.delivery().strike(club)?;
+    // Borrowed from the `Result`s, not moved out: the outcomes are large, and each move is
+    // a copy on the target (docs/ffi.md, "Cost").
+    let hit = impact::solve(club, &ball, &strike, solver);
+    let hit = hit.as_ref().map_err(|e| *e)?;
+    let flight = match buffer {
+        None => scene.fly(&hit.ball, &integrator, None),
         Some(b) => {
             let mut recorder = Recorder::with_sink(input.record_interval_s, b)?;
-            shot::play(
-                &club,
-                &ball,
-                &delivery,
-                &scene,
-                &fidelity,
-                Some(&mut recorder),
-            )?
+            scene.fly(&hit.ball, &integrator, Some(&mut recorder))
         }
     };
-    Ok(CarryShotResult {
-        impact: CarryImpactResult::from_outcome(&out.impact),
-        flight: CarryFlightResult::from_outcome(&out.flight),
-    })
+    let flight = flight.as_ref().map_err(|e| *e)?;
+    emit(&|| CarryShotResult {
+        impact: CarryImpactResult::from_outcome(hit),
+        flight: CarryFlightResult::from_outcome(flight),
+    });
+    Ok(flight.recording_full)
 }
