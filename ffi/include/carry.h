@@ -878,9 +878,9 @@ enum carry_error_t carry_impact_f64(const CarryImpactInputF64 *input, CarryImpac
 
 // Flight: launch → landing (→ rest on a ground), single precision. `samples` may be
 // NULL (no trajectory); otherwise it holds `capacity` samples, `count` (not NULL)
-// receives how many were written, one every `record_interval_s` and then the landing.
-// A full buffer returns `CARRY_ERR_BUFFER_TOO_SMALL` with `*out` complete. `*out` is
-// written on `CARRY_OK` and `CARRY_ERR_BUFFER_TOO_SMALL` only.
+// receives how many were written, one every `record_interval_s` and then the landing
+// (0 on an error). A full buffer returns `CARRY_ERR_BUFFER_TOO_SMALL` with `*out`
+// complete. `*out` is written on `CARRY_OK` and `CARRY_ERR_BUFFER_TOO_SMALL` only.
 //
 // # Safety
 // `input` NULL or readable; `samples` NULL or `capacity` writable samples; `count` and

@@ -184,7 +184,7 @@ unsafe fn flight_entry<T: Real>(
             })
         };
         // SAFETY: `count` NULL or writable.
-        unsafe { flight::finish(buffer.as_ref(), count) };
+        unsafe { flight::finish(buffer.as_ref(), count, full.is_ok()) };
         flight::full(buffer.as_ref(), full?)
     })())
 }
@@ -212,7 +212,7 @@ unsafe fn shot_entry<T: Real>(
             })
         };
         // SAFETY: `count` NULL or writable.
-        unsafe { flight::finish(buffer.as_ref(), count) };
+        unsafe { flight::finish(buffer.as_ref(), count, full.is_ok()) };
         flight::full(buffer.as_ref(), u32::from(full?))
     })())
 }
@@ -246,9 +246,9 @@ pub unsafe extern "C" fn carry_impact_f64(
 
 /// Flight: launch → landing (→ rest on a ground), single precision. `samples` may be
 /// NULL (no trajectory); otherwise it holds `capacity` samples, `count` (not NULL)
-/// receives how many were written, one every `record_interval_s` and then the landing.
-/// A full buffer returns `CARRY_ERR_BUFFER_TOO_SMALL` with `*out` complete. `*out` is
-/// written on `CARRY_OK` and `CARRY_ERR_BUFFER_TOO_SMALL` only.
+/// receives how many were written, one every `record_interval_s` and then the landing
+/// (0 on an error). A full buffer returns `CARRY_ERR_BUFFER_TOO_SMALL` with `*out`
+/// complete. `*out` is written on `CARRY_OK` and `CARRY_ERR_BUFFER_TOO_SMALL` only.
 ///
 /// # Safety
 /// `input` NULL or readable; `samples` NULL or `capacity` writable samples; `count` and

@@ -29,7 +29,7 @@ pub struct CarryLaunch<T> {
 
 /// One trajectory sample (global frame).
 #[repr(C)]
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct CarrySample<T> {
     /// Time since launch (s).
     pub time_s: T,
@@ -59,7 +59,7 @@ pub struct CarryFlightInput<T> {
 
 /// Where and how the ball lands, and where it comes to rest on a ground.
 #[repr(C)]
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct CarryFlightResult<T> {
     /// Carry: horizontal distance from the tee to the landing (m).
     pub carry_m: T,
@@ -305,14 +305,17 @@ pub unsafe fn buffer<T: Real>(
     Ok(Some(unsafe { Buffer::new(samples, capacity) }))
 }
 
-/// Writes the sample count (0 without a buffer) when `count` is not NULL.
+/// Writes the sample count when `count` is not NULL: the samples written by a flight that
+/// succeeded (`ok`), else 0 (the samples of a failed flight, e.g. a diverging fixed step,
+/// are not results).
 ///
 /// # Safety
 /// `count` is NULL or writable.
-pub unsafe fn finish<T: Real>(buffer: Option<&Buffer<T>>, count: *mut usize) {
+pub unsafe fn finish<T: Real>(buffer: Option<&Buffer<T>>, count: *mut usize, ok: bool) {
     if !count.is_null() {
+        let n = if ok { buffer.map_or(0, Buffer::len) } else { 0 };
         // SAFETY: not NULL, writable by the caller's contract.
-        unsafe { crate::ptr::write(count, buffer.map_or(0, Buffer::len)) };
+        unsafe { crate::ptr::write(count, n) };
     }
 }
 

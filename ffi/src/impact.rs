@@ -50,7 +50,7 @@ pub struct CarryImpactInput<T> {
 
 /// The result of an impact (global frame: x downrange, y up, z right).
 #[repr(C)]
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct CarryImpactResult<T> {
     /// Ball velocity after impact (m/s).
     pub ball_velocity_mps: [T; 3],

@@ -31,7 +31,7 @@ mod ptr;
 pub mod scene;
 pub mod settings;
 pub mod shot;
-mod units;
+pub mod units;
 
 pub use club::{CarryBall, CarryClub};
 pub use error::{CarryError, carry_error_message};
@@ -97,13 +97,32 @@ pub type CarryShotResultF64 = CarryShotResult<f64>;
 mod api;
 mod defaults;
 pub use api::*;
+pub use units::*;
 
 /// The staticlib's panic handler on bare metal. Never reached: `nopanic/` proves the C
 /// entry points link without any panic path.
-#[cfg(all(target_os = "none", feature = "panic-handler"))]
+#[cfg(all(
+    target_os = "none",
+    feature = "panic-handler",
+    not(feature = "panic-undefined")
+))]
 #[panic_handler]
 fn panic(_: &core::panic::PanicInfo<'_>) -> ! {
     loop {
         core::hint::spin_loop();
     }
+}
+
+/// The no-panic proof's handler (`nopanic/src/bin/ffi.rs`): calls a function that does
+/// not exist, so an image that can still reach a panic does not link.
+#[cfg(all(target_os = "none", feature = "panic-undefined"))]
+#[panic_handler]
+fn panic(_: &core::panic::PanicInfo<'_>) -> ! {
+    unsafe extern "C" {
+        /// Never defined: referencing it fails the link.
+        fn carry_core_reached_a_panic_path() -> !;
+    }
+    // SAFETY: never runs; the symbol does not exist, so an image that still calls the
+    // panic handler does not link.
+    unsafe { carry_core_reached_a_panic_path() }
 }

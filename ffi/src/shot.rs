@@ -30,7 +30,7 @@ pub struct CarryShotInput<T> {
 
 /// Impact and flight of one shot.
 #[repr(C)]
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct CarryShotResult<T> {
     /// The impact.
     pub impact: CarryImpactResult<T>,
