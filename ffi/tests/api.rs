@@ -264,6 +264,26 @@ fn shot_and_trajectory_equal_the_core() {
     shot_with_trajectory::<f64>();
 }
 
+/// A flight that fails after recording samples (it never comes down to a 1 km landing
+/// height) reports no samples: they are not results.
+#[test]
+fn failed_flight_reports_no_samples() {
+    let mut i = CarryFlightInputF64::default();
+    i.scene.landing_height_m = 1000.0;
+    let mut samples = vec![zeroed::<CarrySampleF64>(); 64];
+    let mut count = usize::MAX;
+    let mut out = zeroed::<CarryFlightResultF64>();
+    assert_eq!(
+        f64::flight(&i, &mut samples, &mut count, &mut out),
+        CARRY_ERR_NO_LANDING
+    );
+    assert_eq!(count, 0);
+    assert!(
+        samples[0].time_s == 0.0 && samples[1].time_s > 0.0,
+        "it did record"
+    );
+}
+
 #[test]
 fn every_error_code_has_a_distinct_message() {
     let mut seen = std::collections::HashSet::new();
