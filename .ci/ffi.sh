@@ -11,7 +11,8 @@
 #     and prints them and the flash size beside the Rust firmware's (firmware/cost.sh,
 #     firmware/size.sh). Fails if the C shot costs more than FFI_MAX_RATIO (default 1.05)
 #     times the Rust one.
-# Budget: about 4 minutes on the 2-core CI machine once the tools are installed.
+# Budget: ~1.5 minutes on the 2-core CI machine after .ci/firmware.sh (warm caches); a
+# fresh machine adds `cargo install cbindgen` (~3.5 min) and the firmware build.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 start=$SECONDS
@@ -37,6 +38,12 @@ rustup target list --installed | grep -qx "$TARGET" || rustup target add "$TARGE
 if [ "$(cbindgen --version 2>/dev/null)" != "cbindgen $CBINDGEN_VERSION" ]; then
     cargo install --locked "cbindgen@$CBINDGEN_VERSION"
 fi
+# The Rust firmware's cost.sh (step 4) links with flip-link and decodes with defmt-print;
+# .ci/firmware.sh installs them first in .ci/run, this covers a run of ffi.sh alone.
+need_cargo=()
+command -v flip-link >/dev/null || need_cargo+=(flip-link)
+command -v defmt-print >/dev/null || need_cargo+=(defmt-print)
+[ ${#need_cargo[@]} -eq 0 ] || cargo install --locked "${need_cargo[@]}"
 arm-none-eabi-gcc --version | head -1
 cbindgen --version
 
