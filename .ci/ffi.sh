@@ -19,8 +19,9 @@ start=$SECONDS
 t() { printf '\n--- ffi: %s (t=%ss)\n' "$*" "$((SECONDS - start))"; }
 CBINDGEN_VERSION=0.29.4
 TARGET=thumbv7em-none-eabihf
-GEN=target/ffi-gen
-OUT=target/ffi-firmware
+TD=${CARGO_TARGET_DIR:-target}
+GEN=$TD/ffi-gen
+OUT=$TD/ffi-firmware
 
 t "install"
 need_apt=()
@@ -66,15 +67,16 @@ csrc=(ffi/tests/c/test_carry.c ffi/tests/c/golden_run.c)
 native=$(cargo rustc --quiet --release -p carry-ffi --crate-type staticlib -- --print native-static-libs 2>&1 \
     | sed -n 's/.*native-static-libs: //p' | tail -1)
 # shellcheck disable=SC2086
-cc "${ccflags[@]}" "${csrc[@]}" target/release/libcarry_ffi.a $native -o "$tmp/test_carry_static"
-cc "${ccflags[@]}" "${csrc[@]}" -L target/release -lcarry_ffi -Wl,-rpath,"$PWD/target/release" -lm -o "$tmp/test_carry_shared"
+cc "${ccflags[@]}" "${csrc[@]}" "$TD/release/libcarry_ffi.a" $native -o "$tmp/test_carry_static"
+cc "${ccflags[@]}" "${csrc[@]}" -L "$TD/release" -lcarry_ffi -Wl,-rpath,"$(cd "$TD/release" && pwd)" -lm -o "$tmp/test_carry_shared"
 "$tmp/test_carry_static" "$GEN/expected.txt"
 "$tmp/test_carry_shared" "$GEN/expected.txt"
 
 t "Cortex-M: libcarry_ffi.a ($TARGET, profile firmware) and the C firmware"
 cargo rustc --quiet -p carry-ffi --target "$TARGET" --profile firmware --crate-type staticlib
-lib=$PWD/target/$TARGET/firmware/libcarry_ffi.a
-make -s -C ffi/examples/firmware GEN="$PWD/$GEN" LIB="$lib" OUT="$PWD/$OUT"
+mkdir -p "$GEN" "$OUT"
+lib=$(cd "$TD/$TARGET/firmware" && pwd)/libcarry_ffi.a
+make -s -C ffi/examples/firmware GEN="$(cd "$GEN" && pwd)" LIB="$lib" OUT="$(cd "$OUT" && pwd)"
 qemu() { # ELF [extra args]: runs on mps2-an386, semihosting console on stdout
     local elf=$1; shift
     timeout -k 5 300 qemu-system-arm -machine mps2-an386 -cpu cortex-m4 -nographic \
