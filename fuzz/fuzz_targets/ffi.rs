@@ -8,7 +8,11 @@
 //! `time limit / 2e5`, updrafts that grow without bound and absurd drag scales are legal
 //! but slow, and skipped.
 #![no_main]
-#![allow(unsafe_code, clippy::neg_cmp_op_on_partial_ord)]
+#![allow(
+    unsafe_code,
+    clippy::neg_cmp_op_on_partial_ord,
+    clippy::field_reassign_with_default
+)]
 
 use carry_core::real::{Real, lit, to_f64};
 use carry_ffi::error::ALL;
