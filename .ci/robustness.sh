@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Issue 7 in CI (called by .ci/run): the no-panic link check of the core for
-# thumbv7em-none-eabihf, its negative control, and a bounded fuzz run of each cargo-fuzz
-# target (FUZZ_SECONDS each, default 60; the corpus under fuzz/corpus/ is committed).
+# Issue 7 in CI (called by .ci/run): the no-panic link check of the core and of the C API
+# (carry-ffi, issue 13) for thumbv7em-none-eabihf, its negative control, and a bounded fuzz
+# run of each cargo-fuzz target, the C API's (`ffi`) included (FUZZ_SECONDS each, default
+# 60; the corpus under fuzz/corpus/ is committed).
 # See docs/robustness.md.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -9,9 +10,10 @@ FUZZ_SECONDS=${FUZZ_SECONDS:-60}
 start=$SECONDS
 say() { printf -- '--- %s (t=%ss)\n' "$*" "$((SECONDS - start))"; }
 
-say "no-panic link: release image of the impact and flight paths, undefined panic handler"
+say "no-panic link: release images of the impact and flight paths and of the C API, undefined panic handler"
 (cd nopanic && cargo build --release --target thumbv7em-none-eabihf)
 echo "nopanic: linked — no panic path reachable from the core's impact and flight entry points"
+echo "nopanic: linked — no panic path reachable from the C API's entry points (carry-ffi, bin ffi)"
 
 say "negative control: one deliberate panic must fail the link"
 if (cd nopanic && cargo build --release --target thumbv7em-none-eabihf --features canary) >/tmp/nopanic-canary.log 2>&1; then
@@ -20,6 +22,12 @@ if (cd nopanic && cargo build --release --target thumbv7em-none-eabihf --feature
 fi
 grep -q "undefined symbol: carry_core_reached_a_panic_path" /tmp/nopanic-canary.log
 echo "nopanic canary: link failed on carry_core_reached_a_panic_path, as it must"
+if (cd nopanic && cargo build --release --target thumbv7em-none-eabihf --features canary --bin ffi) >/tmp/nopanic-canary-ffi.log 2>&1; then
+  echo "nopanic canary (C API image) linked: the check would not catch a panic" >&2
+  exit 1
+fi
+grep -q "undefined symbol: carry_core_reached_a_panic_path" /tmp/nopanic-canary-ffi.log
+echo "nopanic canary (C API image): link failed as it must"
 
 say "cargo-fuzz"
 if ! cargo fuzz --version >/dev/null 2>&1; then

@@ -47,7 +47,7 @@ pub mod scene;
 pub mod wind;
 
 pub use air::{Air, Pressure, Weather};
-pub use flight::{FlightOutcome, Integrator, Recorder, Sample, Stats, fly};
+pub use flight::{FlightOutcome, Integrator, Recorder, Sample, SampleSink, Stats, fly};
 pub use ground::{Ground, Rollout, RunEnd, Surface, Turf};
 pub use scene::{Effects, PreparedScene, Scene};
 pub use wind::Wind;

@@ -3,7 +3,8 @@
 //! Every input comes through [`black_box`], so the optimiser knows nothing about it: a
 //! panic path in the core survives unless the code itself rules it out. The results go
 //! back into `black_box` so nothing is dead code. Both precisions are linked. The flight
-//! paths include the ground after the landing (bounces, hops, roll; issue 12).
+//! paths include the ground after the landing (bounces, hops, roll; issue 12). The C
+//! API's entry points have their own image, `src/bin/ffi.rs` (issue 13).
 #![no_std]
 #![no_main]
 

@@ -151,6 +151,40 @@ pub struct Sample<T: Real> {
     pub spin_radps: Vector3<T>,
 }
 
+/// Where a [`Recorder`] can put its samples besides a `heapless::Vec`: storage the caller
+/// owns (e.g. a C caller's buffer, `carry-ffi`), filled in order.
+pub trait SampleSink<T: Real> {
+    /// Forgets the samples so far (a flight starts).
+    fn clear(&mut self);
+    /// Stores one sample; `false` when there is no room (recording then stops).
+    fn push(&mut self, sample: Sample<T>) -> bool;
+}
+
+/// The storage of a [`Recorder`].
+enum Store<'a, T: Real> {
+    Buffer(&'a mut VecView<Sample<T>>),
+    Sink(&'a mut dyn SampleSink<T>),
+}
+
+impl<T: Real> core::fmt::Debug for Store<'_, T> {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self {
+            Self::Buffer(b) => f.debug_tuple("Buffer").field(&b.len()).finish(),
+            Self::Sink(_) => f.write_str("Sink"),
+        }
+    }
+}
+
+#[cfg(feature = "defmt")]
+impl<T: Real> defmt::Format for Store<'_, T> {
+    fn format(&self, f: defmt::Formatter<'_>) {
+        match self {
+            Self::Buffer(b) => defmt::write!(f, "Buffer({=usize})", b.len()),
+            Self::Sink(_) => defmt::write!(f, "Sink"),
+        }
+    }
+}
+
 /// Records the trajectory into a caller-provided fixed-capacity buffer: a sample every
 /// `interval_s` from launch (interpolated, not step ends), then the landing. When the
 /// buffer fills, recording stops and [`FlightOutcome::recording_full`] is set — the
@@ -159,7 +193,7 @@ pub struct Sample<T: Real> {
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct Recorder<'a, T: Real> {
     interval_s: T,
-    samples: &'a mut VecView<Sample<T>>,
+    samples: Store<'a, T>,
     full: bool,
 }
 
@@ -176,15 +210,33 @@ impl<'a, T: Real> Recorder<'a, T> {
         buffer.clear();
         Ok(Self {
             interval_s,
-            samples: buffer.as_mut_view(),
+            samples: Store::Buffer(buffer.as_mut_view()),
             full: false,
         })
     }
 
-    /// The samples recorded by the last flight.
+    /// A recorder handing its samples to `sink` (cleared) every `interval_s` seconds.
+    ///
+    /// # Errors
+    /// [`Field::RecordInterval`] when `interval_s` is not finite and positive.
+    pub fn with_sink(interval_s: T, sink: &'a mut dyn SampleSink<T>) -> Result<Self> {
+        let interval_s = positive(interval_s, Field::RecordInterval)?;
+        sink.clear();
+        Ok(Self {
+            interval_s,
+            samples: Store::Sink(sink),
+            full: false,
+        })
+    }
+
+    /// The samples recorded by the last flight (empty for a [`Recorder::with_sink`]: the
+    /// sink has them).
     #[must_use]
     pub fn samples(&self) -> &[Sample<T>] {
-        self.samples
+        match &self.samples {
+            Store::Buffer(b) => b,
+            Store::Sink(_) => &[],
+        }
     }
 
     /// Whether the buffer filled up (later samples were dropped).
@@ -194,7 +246,10 @@ impl<'a, T: Real> Recorder<'a, T> {
     }
 
     fn reset(&mut self) {
-        self.samples.clear();
+        match &mut self.samples {
+            Store::Buffer(b) => b.clear(),
+            Store::Sink(s) => s.clear(),
+        }
         self.full = false;
     }
 
@@ -204,7 +259,11 @@ impl<'a, T: Real> Recorder<'a, T> {
     }
 
     pub(crate) fn push(&mut self, sample: Sample<T>) {
-        if self.samples.push(sample).is_err() {
+        let stored = match &mut self.samples {
+            Store::Buffer(b) => b.push(sample).is_ok(),
+            Store::Sink(s) => s.push(sample),
+        };
+        if !stored {
             self.full = true;
         }
     }

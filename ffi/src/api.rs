@@ -1,0 +1,315 @@
+//! The C entry points that compute: presets, impact, flight, shot. Each is a thin wrapper
+//! over a generic function of the precision; see `defaults` for the initialisers.
+
+use crate::club::{PRESET_NAMES, preset_at, preset_named};
+use crate::error::{CARRY_OK, CarryError, Result};
+use crate::flight::{self, CarrySample};
+use crate::ptr::{non_null, with, write};
+use crate::{CarryClub, CarryDelivery, impact, shot};
+use crate::{
+    CarryClubF32, CarryClubF64, CarryDeliveryF32, CarryDeliveryF64, CarryFlightInputF32,
+    CarryFlightInputF64, CarryFlightResultF32, CarryFlightResultF64, CarryImpactInputF32,
+    CarryImpactInputF64, CarryImpactResultF32, CarryImpactResultF64, CarrySampleF32,
+    CarrySampleF64, CarryShotInputF32, CarryShotInputF64, CarryShotResultF32, CarryShotResultF64,
+};
+use carry_core::presets::Preset;
+use carry_core::real::Real;
+use core::ffi::c_char;
+
+pub use crate::defaults::*;
+
+/// `CARRY_OK` or the error.
+pub(crate) fn code(r: Result<()>) -> CarryError {
+    match r {
+        Ok(()) => CARRY_OK,
+        Err(e) => e,
+    }
+}
+
+/// Number of club presets (`carry clubs`).
+#[unsafe(no_mangle)]
+pub extern "C" fn carry_club_preset_count() -> u32 {
+    PRESET_NAMES.len() as u32
+}
+
+/// The name of preset `index` (static, NUL-terminated), or NULL past the last.
+#[unsafe(no_mangle)]
+pub extern "C" fn carry_club_preset_name(index: u32) -> *const c_char {
+    match PRESET_NAMES.get(index as usize) {
+        Some(name) => name.as_ptr(),
+        None => core::ptr::null(),
+    }
+}
+
+fn preset_club<T: Real>(preset: Result<&'static Preset>, out: *mut CarryClub<T>) -> CarryError {
+    code((|| {
+        let out = non_null(out)?;
+        let club = CarryClub::from_spec(&preset?.spec());
+        // SAFETY: not NULL; writable by the caller's contract.
+        unsafe { write(out, club) };
+        Ok(())
+    })())
+}
+
+fn preset_delivery<T: Real>(
+    preset: Result<&'static Preset>,
+    out: *mut CarryDelivery<T>,
+) -> CarryError {
+    code((|| {
+        let out = non_null(out)?;
+        let delivery = CarryDelivery::typical(preset?);
+        // SAFETY: not NULL; writable by the caller's contract.
+        unsafe { write(out, delivery) };
+        Ok(())
+    })())
+}
+
+/// The club preset named `name` (as the CLI's `--club`: `driver`, `3wood`, `hybrid`,
+/// `4iron`…`9iron`, `pw`, `gw`, `sw`, `lw`), single precision.
+///
+/// # Safety
+/// `name` is NULL or NUL-terminated; `out` is NULL or points to a writable club.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn carry_club_preset_f32(
+    name: *const c_char,
+    out: *mut CarryClubF32,
+) -> CarryError {
+    // SAFETY: the caller's contract, forwarded.
+    preset_club(unsafe { preset_named(name) }, out)
+}
+
+/// The club preset named `name`, double precision (see `carry_club_preset_f32`).
+///
+/// # Safety
+/// As `carry_club_preset_f32`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn carry_club_preset_f64(
+    name: *const c_char,
+    out: *mut CarryClubF64,
+) -> CarryError {
+    // SAFETY: the caller's contract, forwarded.
+    preset_club(unsafe { preset_named(name) }, out)
+}
+
+/// Club preset number `index` (0 = driver … `carry_club_preset_count() − 1`), single
+/// precision.
+///
+/// # Safety
+/// `out` is NULL or points to a writable club.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn carry_club_preset_index_f32(
+    index: u32,
+    out: *mut CarryClubF32,
+) -> CarryError {
+    preset_club(preset_at(index), out)
+}
+
+/// Club preset number `index`, double precision.
+///
+/// # Safety
+/// `out` is NULL or points to a writable club.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn carry_club_preset_index_f64(
+    index: u32,
+    out: *mut CarryClubF64,
+) -> CarryError {
+    preset_club(preset_at(index), out)
+}
+
+/// The typical tour delivery of the preset named `name` (club speed, attack angle,
+/// dynamic loft, strike height), as the CLI fills it in for `--club NAME`; single
+/// precision.
+///
+/// # Safety
+/// `name` is NULL or NUL-terminated; `out` is NULL or points to a writable delivery.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn carry_delivery_typical_f32(
+    name: *const c_char,
+    out: *mut CarryDeliveryF32,
+) -> CarryError {
+    // SAFETY: the caller's contract, forwarded.
+    preset_delivery(unsafe { preset_named(name) }, out)
+}
+
+/// The typical tour delivery of the preset named `name`, double precision.
+///
+/// # Safety
+/// As `carry_delivery_typical_f32`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn carry_delivery_typical_f64(
+    name: *const c_char,
+    out: *mut CarryDeliveryF64,
+) -> CarryError {
+    // SAFETY: the caller's contract, forwarded.
+    preset_delivery(unsafe { preset_named(name) }, out)
+}
+
+/// # Safety
+/// `input` is NULL or readable; `out` is NULL or writable.
+unsafe fn impact_entry<T: Real>(
+    input: *const impact::CarryImpactInput<T>,
+    out: *mut impact::CarryImpactResult<T>,
+) -> CarryError {
+    code((|| {
+        let out = non_null(out)?;
+        // SAFETY: NULL or readable by the caller's contract.
+        let result = unsafe { with(input, impact::run) }?;
+        // SAFETY: not NULL; writable by the caller's contract.
+        unsafe { write(out, result) };
+        Ok(())
+    })())
+}
+
+/// # Safety
+/// `input` is NULL or readable; `samples` NULL or `capacity` writable samples; `count`
+/// and `out` NULL or writable.
+unsafe fn flight_entry<T: Real>(
+    input: *const flight::CarryFlightInput<T>,
+    samples: *mut CarrySample<T>,
+    capacity: usize,
+    count: *mut usize,
+    out: *mut flight::CarryFlightResult<T>,
+) -> CarryError {
+    code((|| {
+        let out = non_null(out)?;
+        // SAFETY: the caller's contract on `samples`, `capacity` and `count`.
+        let mut buffer = unsafe { flight::buffer(samples, capacity, count) }?;
+        // SAFETY: NULL or readable by the caller's contract.
+        let full = unsafe {
+            with(input, |i| {
+                let result = flight::run(i, buffer.as_mut())?;
+                // SAFETY: not NULL; writable by the caller's contract.
+                write(out, result);
+                Ok(result.recording_full)
+            })
+        };
+        // SAFETY: `count` NULL or writable.
+        unsafe { flight::finish(buffer.as_ref(), count, full.is_ok()) };
+        flight::full(buffer.as_ref(), full?)
+    })())
+}
+
+/// # Safety
+/// As `flight_entry`.
+unsafe fn shot_entry<T: Real>(
+    input: *const shot::CarryShotInput<T>,
+    samples: *mut CarrySample<T>,
+    capacity: usize,
+    count: *mut usize,
+    out: *mut shot::CarryShotResult<T>,
+) -> CarryError {
+    code((|| {
+        let out = non_null(out)?;
+        // SAFETY: the caller's contract on `samples`, `capacity` and `count`.
+        let mut buffer = unsafe { flight::buffer(samples, capacity, count) }?;
+        // SAFETY: NULL or readable by the caller's contract.
+        let full = unsafe {
+            with(input, |i| {
+                shot::run_with(i, buffer.as_mut(), |result| {
+                    // SAFETY: not NULL; writable by the caller's contract.
+                    write(out, result());
+                })
+            })
+        };
+        // SAFETY: `count` NULL or writable.
+        unsafe { flight::finish(buffer.as_ref(), count, full.is_ok()) };
+        flight::full(buffer.as_ref(), u32::from(full?))
+    })())
+}
+
+/// Impact: club delivery → ball launch, single precision. Writes `*out` on `CARRY_OK`
+/// only.
+///
+/// # Safety
+/// `input` is NULL or points to a readable input, `out` NULL or to a writable result.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn carry_impact_f32(
+    input: *const CarryImpactInputF32,
+    out: *mut CarryImpactResultF32,
+) -> CarryError {
+    // SAFETY: the caller's contract, forwarded.
+    unsafe { impact_entry(input, out) }
+}
+
+/// Impact, double precision (see `carry_impact_f32`).
+///
+/// # Safety
+/// As `carry_impact_f32`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn carry_impact_f64(
+    input: *const CarryImpactInputF64,
+    out: *mut CarryImpactResultF64,
+) -> CarryError {
+    // SAFETY: the caller's contract, forwarded.
+    unsafe { impact_entry(input, out) }
+}
+
+/// Flight: launch → landing (→ rest on a ground), single precision. `samples` may be
+/// NULL (no trajectory); otherwise it holds `capacity` samples, `count` (not NULL)
+/// receives how many were written, one every `record_interval_s` and then the landing
+/// (0 on an error). A full buffer returns `CARRY_ERR_BUFFER_TOO_SMALL` with `*out`
+/// complete. `*out` is written on `CARRY_OK` and `CARRY_ERR_BUFFER_TOO_SMALL` only.
+///
+/// # Safety
+/// `input` NULL or readable; `samples` NULL or `capacity` writable samples; `count` and
+/// `out` NULL or writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn carry_flight_f32(
+    input: *const CarryFlightInputF32,
+    samples: *mut CarrySampleF32,
+    capacity: usize,
+    count: *mut usize,
+    out: *mut CarryFlightResultF32,
+) -> CarryError {
+    // SAFETY: the caller's contract, forwarded.
+    unsafe { flight_entry(input, samples, capacity, count, out) }
+}
+
+/// Flight, double precision (see `carry_flight_f32`).
+///
+/// # Safety
+/// As `carry_flight_f32`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn carry_flight_f64(
+    input: *const CarryFlightInputF64,
+    samples: *mut CarrySampleF64,
+    capacity: usize,
+    count: *mut usize,
+    out: *mut CarryFlightResultF64,
+) -> CarryError {
+    // SAFETY: the caller's contract, forwarded.
+    unsafe { flight_entry(input, samples, capacity, count, out) }
+}
+
+/// Shot: delivery → impact → flight, single precision; the trajectory as in
+/// `carry_flight_f32`.
+///
+/// # Safety
+/// As `carry_flight_f32`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn carry_shot_f32(
+    input: *const CarryShotInputF32,
+    samples: *mut CarrySampleF32,
+    capacity: usize,
+    count: *mut usize,
+    out: *mut CarryShotResultF32,
+) -> CarryError {
+    // SAFETY: the caller's contract, forwarded.
+    unsafe { shot_entry(input, samples, capacity, count, out) }
+}
+
+/// Shot, double precision (see `carry_shot_f32`).
+///
+/// # Safety
+/// As `carry_flight_f32`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn carry_shot_f64(
+    input: *const CarryShotInputF64,
+    samples: *mut CarrySampleF64,
+    capacity: usize,
+    count: *mut usize,
+    out: *mut CarryShotResultF64,
+) -> CarryError {
+    // SAFETY: the caller's contract, forwarded.
+    unsafe { shot_entry(input, samples, capacity, count, out) }
+}

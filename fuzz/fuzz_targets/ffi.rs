@@ -1,0 +1,341 @@
+//! Fuzz the C API (carry-ffi) through its C entry points, in f32 and f64: arbitrary
+//! struct contents (NaN, ±∞, extremes, out-of-range selectors), NULL pointers, no / tiny /
+//! ample trajectory buffers. Every call must return one of the `carry_error_t` codes; a
+//! success (or a full buffer) must leave finite results and a sample count within the
+//! capacity.
+//!
+//! Work bounds as the flight target's (docs/robustness.md): fixed or maximum steps below
+//! `time limit / 2e5`, updrafts that grow without bound and absurd drag scales are legal
+//! but slow, and skipped.
+#![no_main]
+#![allow(
+    unsafe_code,
+    clippy::neg_cmp_op_on_partial_ord,
+    clippy::field_reassign_with_default
+)]
+
+use carry_core::real::{Real, lit, to_f64};
+use carry_ffi::error::ALL;
+use carry_ffi::scene::*;
+use carry_ffi::settings::*;
+use carry_ffi::*;
+use carry_fuzz::Bytes;
+use core::ptr::{null, null_mut};
+use libfuzzer_sys::fuzz_target;
+
+const MAX_STEPS: f64 = 2e5;
+
+/// A selector: mostly one of its `count` values, sometimes any `u32`.
+fn selector(b: &mut Bytes<'_>, count: u32) -> u32 {
+    match b.byte() {
+        0..=239 => u32::from(b.byte()) % count,
+        _ => u32::from_le_bytes([b.byte(), b.byte(), b.byte(), b.byte()]),
+    }
+}
+
+fn f<T: Real>(b: &mut Bytes<'_>, lo: f64, hi: f64) -> T {
+    lit(b.param(lo, hi))
+}
+
+fn a3<T: Real>(b: &mut Bytes<'_>, lo: f64, hi: f64) -> [T; 3] {
+    b.vec3(lo, hi).map(lit)
+}
+
+fn mutate_club<T: Real>(b: &mut Bytes<'_>, c: &mut CarryClub<T>) {
+    if b.flag() {
+        c.mass_kg = f(b, 0.05, 1.0);
+        c.inertia_kgm2 = [0; 9].map(|_| f(b, -2e-4, 1e-3));
+        c.loft_rad = f(b, -0.5, 1.2);
+        c.roll_radius_m = f(b, 0.05, 2.0);
+        c.bulge_radius_m = f(b, 0.05, 2.0);
+        c.face_depth_radius_m = f(b, 0.0, 2.0);
+        c.cg_to_face_m = a3(b, -0.05, 0.06);
+        c.restitution = f(b, 0.0, 1.0);
+        c.friction = f(b, -0.1, 2.0);
+        c.tangential_restitution = f(b, -1.1, 1.1);
+        c.tangential_restitution_slope = f(b, -5.0, 5.0);
+        c.restitution_speed_slope_spm = f(b, -0.01, 0.05);
+    }
+    c.contact = selector(b, 2);
+}
+
+fn mutate_delivery<T: Real>(b: &mut Bytes<'_>, d: &mut CarryDelivery<T>) {
+    if b.flag() {
+        d.club_speed_mps = f(b, 0.0, 80.0);
+        d.attack_angle_rad = f(b, -0.5, 0.5);
+        d.club_path_rad = f(b, -0.5, 0.5);
+        d.face_angle_rad = f(b, -0.5, 0.5);
+        d.dynamic_loft_rad = f(b, -0.5, 1.2);
+        d.lie_rad = f(b, -0.5, 0.5);
+        d.club_spin_radps = a3(b, -100.0, 100.0);
+        d.impact_height_m = f(b, -0.04, 0.04);
+        d.impact_toe_m = f(b, -0.05, 0.05);
+    }
+}
+
+/// The scene and settings; `false` when the flight would take unbounded work.
+fn mutate_scene<T: Real>(
+    b: &mut Bytes<'_>,
+    s: &mut CarryScene<T>,
+    n: &mut CarrySettings<T>,
+) -> bool {
+    if b.flag() {
+        s.drag = u32::from(b.byte());
+        s.lift = u32::from(b.flag());
+        s.spin_decay = u32::from(b.flag());
+        s.air_density_kgm3 = f(b, 0.0, 2.0);
+        s.temperature_c = f(b, -40.0, 50.0);
+        s.relative_humidity = f(b, 0.0, 1.0);
+        s.pressure_pa = f(b, 5e4, 1.1e5);
+        s.altitude_m = f(b, -500.0, 5000.0);
+        s.wind_mps = a3(b, -30.0, 30.0);
+        s.wind_reference_height_m = f(b, 0.5, 50.0);
+        s.wind_exponent = f(b, 0.0, 0.5);
+        s.landing_height_m = f(b, -20.0, 40.0);
+        s.time_limit_s = f(b, 0.1, 60.0);
+        s.gravity_mps2 = f(b, 0.0, 20.0);
+        s.launch_position_m = a3(b, -5.0, 5.0);
+        s.stimp_m = f(b, 1.0, 5.0);
+        s.ground_normal = a3(b, -0.3, 1.0);
+    }
+    s.aero = selector(b, 2);
+    s.air = selector(b, 3);
+    s.wind = selector(b, 3);
+    s.ground = selector(b, 6);
+    n.solver = selector(b, 2);
+    n.integrator = selector(b, 3);
+    if b.flag() {
+        n.step_s = f(b, 1e-4, 0.1);
+        n.rtol = f(b, 1e-12, 1e-2);
+        n.atol = f(b, 1e-12, 1e-2);
+        n.initial_step_s = f(b, 1e-4, 1.0);
+        n.max_step_s = f(b, 1e-3, 10.0);
+    }
+    let limit = to_f64(s.time_limit_s);
+    let step = match n.integrator {
+        CARRY_INTEGRATOR_DP45 => to_f64(n.max_step_s),
+        _ => to_f64(n.step_s),
+    };
+    let w = s.wind_mps.map(to_f64);
+    let calm = match s.wind {
+        CARRY_WIND_PROFILE => to_f64(s.wind_exponent) <= 0.5 && w[1].abs() <= 5.0,
+        CARRY_WIND_UNIFORM => w[1].abs() <= 50.0,
+        _ => true,
+    };
+    let air = to_f64(s.air_density_kgm3);
+    limit.is_finite() && !(step < limit / MAX_STEPS) && calm && !(air > 10.0)
+}
+
+fn finite<T: Real>(xs: &[T]) -> bool {
+    xs.iter().all(|x| x.is_finite())
+}
+
+fn check_flight<T: Real>(r: &CarryFlightResult<T>) {
+    let mut xs = vec![
+        r.carry_m,
+        r.carry_x_m,
+        r.side_m,
+        r.apex_m,
+        r.apex_time_s,
+        r.flight_time_s,
+        r.landing_angle_rad,
+        r.landing_speed_mps,
+        r.landing_spin_radps,
+        r.air_density_kgm3,
+    ];
+    xs.extend(
+        r.landing_position_m
+            .iter()
+            .chain(&r.landing_velocity_mps)
+            .chain(&r.landing_spin_vector_radps),
+    );
+    if r.has_ground != 0 {
+        xs.extend([r.total_m, r.roll_m, r.time_to_rest_s]);
+        xs.extend(r.rest_position_m);
+    }
+    assert!(finite(&xs), "non-finite flight result {r:?}");
+}
+
+fn check_impact<T: Real>(r: &CarryImpactResult<T>) {
+    let mut xs: Vec<T> = [
+        r.ball_velocity_mps,
+        r.ball_spin_radps,
+        r.club_velocity_mps,
+        r.club_spin_radps,
+        r.impulse_ns,
+    ]
+    .concat();
+    xs.extend([
+        r.ball_speed_mps,
+        r.launch_angle_rad,
+        r.launch_direction_rad,
+        r.spin_radps,
+        r.backspin_radps,
+        r.sidespin_radps,
+        r.spin_axis_rad,
+        r.smash_factor,
+    ]);
+    assert!(finite(&xs), "non-finite impact result {r:?}");
+}
+
+/// The C API of one precision.
+trait Api: Real + Default {
+    unsafe fn impact(
+        i: *const CarryImpactInput<Self>,
+        o: *mut CarryImpactResult<Self>,
+    ) -> CarryError;
+    unsafe fn flight(
+        i: *const CarryFlightInput<Self>,
+        s: *mut CarrySample<Self>,
+        c: usize,
+        n: *mut usize,
+        o: *mut CarryFlightResult<Self>,
+    ) -> CarryError;
+    unsafe fn shot(
+        i: *const CarryShotInput<Self>,
+        s: *mut CarrySample<Self>,
+        c: usize,
+        n: *mut usize,
+        o: *mut CarryShotResult<Self>,
+    ) -> CarryError;
+}
+
+macro_rules! api {
+    ($t:ty, $i:ident, $f:ident, $s:ident) => {
+        impl Api for $t {
+            unsafe fn impact(
+                i: *const CarryImpactInput<Self>,
+                o: *mut CarryImpactResult<Self>,
+            ) -> CarryError {
+                unsafe { $i(i, o) }
+            }
+            unsafe fn flight(
+                i: *const CarryFlightInput<Self>,
+                s: *mut CarrySample<Self>,
+                c: usize,
+                n: *mut usize,
+                o: *mut CarryFlightResult<Self>,
+            ) -> CarryError {
+                unsafe { $f(i, s, c, n, o) }
+            }
+            unsafe fn shot(
+                i: *const CarryShotInput<Self>,
+                s: *mut CarrySample<Self>,
+                c: usize,
+                n: *mut usize,
+                o: *mut CarryShotResult<Self>,
+            ) -> CarryError {
+                unsafe { $s(i, s, c, n, o) }
+            }
+        }
+    };
+}
+api!(f32, carry_impact_f32, carry_flight_f32, carry_shot_f32);
+api!(f64, carry_impact_f64, carry_flight_f64, carry_shot_f64);
+
+/// NULL (rarely) or the address of `x`.
+fn ptr_or_null<P>(b: &mut Bytes<'_>, x: *mut P) -> *mut P {
+    if b.byte() < 8 { null_mut() } else { x }
+}
+
+fn run<T: Api>(b: &mut Bytes<'_>) {
+    let mut samples = vec![CarrySample::<T>::default(); 16];
+    let capacity = usize::from(b.byte() % 17);
+    let with_buffer = b.flag();
+    let sp = if with_buffer {
+        samples.as_mut_ptr()
+    } else {
+        null_mut()
+    };
+    let mut count = usize::MAX;
+    let np = ptr_or_null(b, &mut count);
+    let code = match b.byte() % 3 {
+        0 => {
+            let mut i = CarryImpactInput::<T>::default();
+            mutate_club(b, &mut i.club);
+            mutate_delivery(b, &mut i.delivery);
+            i.ball.mass_kg = f(b, 0.01, 0.1);
+            i.settings.solver = selector(b, 2);
+            let mut o = CarryImpactResult::<T>::default();
+            let ip = if b.byte() < 8 { null() } else { &i as *const _ };
+            let op = ptr_or_null(b, &mut o);
+            // SAFETY: NULL or live values.
+            let code = unsafe { T::impact(ip, op) };
+            if code == CarryError::CARRY_OK {
+                check_impact(&o);
+            }
+            code
+        }
+        1 => {
+            let mut i = CarryFlightInput::<T>::default();
+            i.launch = CarryLaunch {
+                ball_speed_mps: f(b, 0.0, 150.0),
+                launch_angle_rad: f(b, -1.6, 1.6),
+                launch_direction_rad: f(b, -3.2, 3.2),
+                backspin_radps: f(b, -2200.0, 2200.0),
+                sidespin_radps: f(b, -2200.0, 2200.0),
+            };
+            i.record_interval_s = f(b, 1e-3, 1.0);
+            if !mutate_scene(b, &mut i.scene, &mut i.settings) {
+                return;
+            }
+            let mut o = CarryFlightResult::<T>::default();
+            let op = ptr_or_null(b, &mut o);
+            // SAFETY: NULL or live values; `sp` holds 16 ≥ `capacity` samples.
+            let code = unsafe { T::flight(&i, sp, capacity, np, op) };
+            if matches!(
+                code,
+                CarryError::CARRY_OK | CarryError::CARRY_ERR_BUFFER_TOO_SMALL
+            ) {
+                check_flight(&o);
+            }
+            code
+        }
+        _ => {
+            let mut i = CarryShotInput::<T>::default();
+            mutate_club(b, &mut i.club);
+            mutate_delivery(b, &mut i.delivery);
+            i.record_interval_s = f(b, 1e-3, 1.0);
+            if !mutate_scene(b, &mut i.scene, &mut i.settings) {
+                return;
+            }
+            let mut o = CarryShotResult::<T>::default();
+            let op = ptr_or_null(b, &mut o);
+            // SAFETY: NULL or live values; `sp` holds 16 ≥ `capacity` samples.
+            let code = unsafe { T::shot(&i, sp, capacity, np, op) };
+            if matches!(
+                code,
+                CarryError::CARRY_OK | CarryError::CARRY_ERR_BUFFER_TOO_SMALL
+            ) {
+                check_impact(&o.impact);
+                check_flight(&o.flight);
+            }
+            code
+        }
+    };
+    assert!(ALL.contains(&code), "not a carry_error_t: {}", code as u32);
+    if code == CarryError::CARRY_ERR_BUFFER_TOO_SMALL {
+        assert!(with_buffer, "a full buffer without a buffer");
+    }
+    if with_buffer && !np.is_null() && count != usize::MAX {
+        assert!(
+            count <= capacity,
+            "{count} samples in a buffer of {capacity}"
+        );
+        for s in &samples[..count] {
+            assert!(
+                s.time_s.is_finite() && finite(&s.position_m) && finite(&s.velocity_mps),
+                "non-finite sample after {code:?}: {s:?}"
+            );
+        }
+    }
+}
+
+fuzz_target!(|data: &[u8]| {
+    let mut b = Bytes::new(data);
+    if b.flag() {
+        run::<f32>(&mut b);
+    } else {
+        run::<f64>(&mut b);
+    }
+});
