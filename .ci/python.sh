@@ -12,7 +12,7 @@ say() { printf -- '--- %s (t=%ss)\n' "$*" "$((SECONDS - start))"; }
 VENV=${CARRY_VENV:-${TMPDIR:-/tmp}/carry-python-ci}
 DASK_SHOTS=${DASK_SHOTS:-20000}
 
-say "rustfmt and clippy of the python crate"
+say "rustfmt of the python crate"
 (cd python && cargo fmt --check)
 
 say "venv $VENV"
@@ -23,16 +23,17 @@ python -m pip install --quiet --upgrade pip
 python -m pip install --quiet pytest numpy pandas "dask[dataframe]" distributed
 python --version
 
-# clippy needs the venv's interpreter (PyO3's build script asks it for its version)
-(cd python && PYO3_PYTHON="$VENV/bin/python" cargo clippy --quiet -- -D warnings)
-
 say "pip install ./python (README)"
 python -m pip install --quiet ./python
 python -c "import carry; print('carry', carry.__version__, carry.__file__)"
 
-say "the CLI for the agreement tests"
-cargo build --release --quiet -p carry-cli
-export CARRY_CLI=$PWD/target/release/carry
+say "clippy of the python crate (release: shares build scripts and proc-macros with the build above)"
+# PYO3_PYTHON: PyO3's build script asks the venv's interpreter for its version.
+(cd python && PYO3_PYTHON="$VENV/bin/python" cargo clippy --release --quiet -- -D warnings)
+
+say "the CLI for the agreement tests (in the python workspace: reuses the extension's build of core, lab and carry-cli)"
+cargo build --release --quiet --manifest-path python/Cargo.toml -p carry-cli --bin carry
+export CARRY_CLI=$PWD/python/target/release/carry
 
 say "pytest python/tests"
 # From the repository root, so `import carry` is the installed package, not python/carry.
