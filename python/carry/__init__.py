@@ -150,15 +150,16 @@ def _run(mode: str, kwargs: Mapping[str, Any], raise_on_error: bool) -> Dict[str
         raise ValueError(f"{', '.join(names)}: shapes do not broadcast ({shapes})") from None
     rows = math.prod(shape)
     flat = [np.ascontiguousarray(np.broadcast_to(a, shape), dtype=np.float64).reshape(-1) for a in arrays]
-    values, errors = _carry.run(mode, names, flat, options, rows)
-    out: Dict[str, Any] = {k: v.reshape(shape) for k, v in values.items()}
-    err = np.empty(rows, dtype=object)
-    err[:] = errors
+    keys, data, failed = _carry.run(mode, names, flat, options, rows)
+    if raise_on_error and failed:
+        i, message = failed[0]
+        raise ShotError(tuple(int(j) for j in np.unravel_index(i, shape)), message)
+    # Column views of the (rows, columns) result: no copy.
+    out: Dict[str, Any] = {k: data[:, j].reshape(shape) for j, k in enumerate(keys)}
+    err = np.full(rows, None, dtype=object)
+    for i, message in failed:
+        err[i] = message
     out["errors"] = err.reshape(shape)
-    if raise_on_error:
-        for i, message in enumerate(errors):
-            if message is not None:
-                raise ShotError(tuple(int(j) for j in np.unravel_index(i, shape)), message)
     return out
 
 

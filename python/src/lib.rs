@@ -10,10 +10,9 @@ mod fit;
 mod rows;
 
 use carry_cli::compute::Mode;
-use numpy::{PyArray1, PyReadonlyArray1};
+use numpy::{PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray1};
 use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::PyDict;
 use std::path::PathBuf;
 
 fn mode_of(name: &str) -> PyResult<Mode> {
@@ -33,8 +32,8 @@ fn inputs(mode: &str) -> PyResult<Vec<(&'static str, &'static str)>> {
 }
 
 /// Runs `mode` over the rows of `columns` (flat float64 arrays of one length, named by
-/// `names`) with the shared `options` ((name, text) pairs). Returns (dict of column name →
-/// float64 array, list of per-row error messages or None).
+/// `names`) with the shared `options` ((name, text) pairs). Returns (column names, a
+/// float64 array of shape (rows, columns), list of (row index, message) of failed rows).
 #[pyfunction]
 #[pyo3(signature = (mode, names, columns, options, rows))]
 fn run<'py>(
@@ -44,7 +43,7 @@ fn run<'py>(
     columns: Vec<PyReadonlyArray1<'py, f64>>,
     options: Vec<(String, String)>,
     rows: usize,
-) -> PyResult<(Bound<'py, PyDict>, Vec<Option<String>>)> {
+) -> PyResult<Output<'py>> {
     let mode = mode_of(mode)?;
     let req =
         args::request(mode, &options, &names).map_err(|e| PyValueError::new_err(e.to_string()))?;
@@ -66,12 +65,17 @@ fn run<'py>(
         })
         .collect::<PyResult<Vec<&[f64]>>>()?;
     let out = py.detach(|| rows::run(&req, &slices, rows));
-    let dict = PyDict::new(py);
-    for (name, column) in out.names.iter().zip(out.columns) {
-        dict.set_item(name, PyArray1::from_vec(py, column))?;
-    }
-    Ok((dict, out.errors))
+    let width = out.names.len();
+    let data = PyArray1::from_vec(py, out.data).reshape([rows, width])?;
+    Ok((out.names, data, out.failed))
 }
+
+/// What [`run`] returns: names, values (rows × columns), failed rows.
+type Output<'py> = (
+    Vec<&'static str>,
+    Bound<'py, PyArray2<f64>>,
+    Vec<(usize, String)>,
+);
 
 /// The output column names of `mode` (with the ground's when `ground`).
 #[pyfunction]

@@ -10,15 +10,16 @@ use rayon::prelude::*;
 /// Rows per parallel work item.
 const BLOCK: usize = 256;
 
-/// The results: one vector per output column, and each row's error (if any).
+/// The results of one call.
 #[derive(Debug, Clone)]
 pub struct Output {
     /// Column names (the CLI's batch CSV columns).
     pub names: Vec<&'static str>,
-    /// Column values, `names[j]` in `columns[j]`; NaN in failed rows.
-    pub columns: Vec<Vec<f64>>,
-    /// The message of each failed row (`club_speed: must be positive`), else `None`.
-    pub errors: Vec<Option<String>>,
+    /// The values, row-major: row `i`, column `j` at `i * names.len() + j`; NaN in failed
+    /// rows.
+    pub data: Vec<f64>,
+    /// The failed rows: index and message (`club_speed: must be positive`).
+    pub failed: Vec<(usize, String)>,
 }
 
 /// The parameters of row `i`: the shared options with the row's numbers.
@@ -31,55 +32,51 @@ fn params(req: &Request, columns: &[&[f64]], i: usize) -> Result<Params, InputEr
     Ok(p)
 }
 
-/// Computes rows `range` into a row-major block of `width` values per row.
+/// Computes the rows from `first` into `out` (row-major, `width` values a row); returns
+/// the failed rows.
 fn block(
     req: &Request,
     columns: &[&[f64]],
-    range: std::ops::Range<usize>,
+    first: usize,
+    out: &mut [f64],
     width: usize,
-) -> (Vec<f64>, Vec<Option<String>>) {
-    let mut values = Vec::with_capacity(range.len() * width);
-    let mut errors = Vec::with_capacity(range.len());
-    for i in range {
+) -> Vec<(usize, String)> {
+    let mut failed = Vec::new();
+    let mut row = Vec::with_capacity(width);
+    for (k, slot) in out.chunks_exact_mut(width).enumerate() {
+        let i = first + k;
         let result =
             params(req, columns, i).and_then(|p| compute::run(req.mode, &p, &req.numerics));
         match result {
             Ok(r) => {
-                csv_values(&mut values, req.mode, req.ground, &r);
-                errors.push(None);
+                row.clear();
+                csv_values(&mut row, req.mode, req.ground, &r);
+                slot.copy_from_slice(&row);
             }
             Err(e) => {
-                values.resize(values.len() + width, f64::NAN);
-                errors.push(Some(e.as_column()));
+                slot.fill(f64::NAN);
+                failed.push((i, e.as_column()));
             }
         }
     }
-    (values, errors)
+    failed
 }
 
 /// Runs `req` over `rows` rows; `columns[j]` holds the values of `req.keys[j]`, each of
-/// length `rows`.
+/// length `rows`. Blocks of rows run in parallel, each writing its part of the output.
 #[must_use]
 pub fn run(req: &Request, columns: &[&[f64]], rows: usize) -> Output {
     let names = csv_columns(req.mode, req.ground);
     let width = names.len();
-    let blocks: Vec<(Vec<f64>, Vec<Option<String>>)> = (0..rows.div_ceil(BLOCK))
-        .into_par_iter()
-        .map(|b| block(req, columns, b * BLOCK..rows.min((b + 1) * BLOCK), width))
+    let mut data = vec![0.0; rows * width];
+    let failed = data
+        .par_chunks_mut(BLOCK * width)
+        .enumerate()
+        .flat_map_iter(|(b, out)| block(req, columns, b * BLOCK, out, width))
         .collect();
-    let mut out: Vec<Vec<f64>> = (0..width).map(|_| Vec::with_capacity(rows)).collect();
-    let mut errors = Vec::with_capacity(rows);
-    for (values, errs) in blocks {
-        for row in values.chunks_exact(width) {
-            for (column, x) in out.iter_mut().zip(row) {
-                column.push(*x);
-            }
-        }
-        errors.extend(errs);
-    }
     Output {
         names,
-        columns: out,
-        errors,
+        data,
+        failed,
     }
 }
