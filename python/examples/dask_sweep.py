@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import sys
 import time
 
@@ -49,7 +50,8 @@ def fly(part: pd.DataFrame) -> pd.DataFrame:
     """One partition through `carry.shot` (one call: all the worker's cores, GIL released)."""
     r = carry.shot(**{c: part[c].to_numpy() for c in part.columns})
     out = pd.DataFrame({k: r[k] for k in KEEP}, index=part.index)
-    out["error"] = pd.Series(r["errors"], index=part.index, dtype=object)
+    # Arrow-backed strings (missing = no error): cheap to move between processes.
+    out["error"] = pd.Series(r["errors"], index=part.index, dtype="string[pyarrow]")
     return out
 
 
@@ -63,7 +65,7 @@ def sweep_on_cluster(client, shots: int, partitions: int, seed: int) -> pd.DataF
 
     n = sizes(shots, partitions)
     inputs = dd.from_map(lambda i: deliveries(i, n[i], seed), list(range(partitions)))
-    meta = pd.DataFrame({k: pd.Series(dtype="float64") for k in KEEP} | {"error": pd.Series(dtype=object)})
+    meta = pd.DataFrame({k: pd.Series(dtype="float64") for k in KEEP} | {"error": pd.Series(dtype="string[pyarrow]")})
     return inputs.map_partitions(fly, meta=meta).compute().reset_index(drop=True)
 
 
@@ -77,10 +79,7 @@ def same(a: pd.DataFrame, b: pd.DataFrame) -> bool:
     if list(a.columns) != list(b.columns) or len(a) != len(b):
         return False
     numbers = all(np.array_equal(a[k].to_numpy(), b[k].to_numpy(), equal_nan=True) for k in KEEP)
-    errors = [None if e is None or e != e else e for e in a["error"]] == [
-        None if e is None or e != e else e for e in b["error"]
-    ]
-    return numbers and errors
+    return numbers and a["error"].equals(b["error"])
 
 
 def main(argv=None) -> int:
@@ -88,7 +87,8 @@ def main(argv=None) -> int:
     p.add_argument("--shots", type=int, default=1_000_000, help="shots in the sweep (default 1e6)")
     p.add_argument("--partitions", type=int, default=0, help="partitions (default: one per 50,000 shots, at least 2 per worker)")
     p.add_argument("--workers", type=int, default=2, help="LocalCluster worker processes (default 2)")
-    p.add_argument("--threads-per-worker", type=int, default=1, help="Dask threads per worker (carry itself uses all cores)")
+    p.add_argument("--threads-per-worker", type=int, default=1, help="Dask threads per worker (default 1: carry parallelises each call)")
+    p.add_argument("--carry-threads", type=int, default=0, help="carry's threads per LocalCluster worker (RAYON_NUM_THREADS; default: cores / workers)")
     p.add_argument("--scheduler", help="address of an existing Dask scheduler instead of a LocalCluster")
     p.add_argument("--seed", type=int, default=2026)
     p.add_argument("--check", action="store_true", help="recompute in this process and require exact equality")
@@ -104,7 +104,15 @@ def main(argv=None) -> int:
     if a.scheduler:
         client = Client(a.scheduler)
     else:
-        cluster = LocalCluster(n_workers=a.workers, threads_per_worker=a.threads_per_worker, processes=True, dashboard_address=None)
+        # One carry pool per worker process, sized so the workers share the cores.
+        threads = a.carry_threads or max(1, (os.cpu_count() or 1) // a.workers)
+        cluster = LocalCluster(
+            n_workers=a.workers,
+            threads_per_worker=a.threads_per_worker,
+            processes=True,
+            dashboard_address=None,
+            env={"RAYON_NUM_THREADS": str(threads)},
+        )
         client = Client(cluster)
     try:
         t0 = time.perf_counter()

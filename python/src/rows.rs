@@ -1,10 +1,12 @@
 //! The rows of one call, computed in parallel (rayon, all cores) into columns.
 
 use crate::args::{Request, check_value};
-use carry_cli::compute;
+use carry_cli::compute::{self, Mode, Precision};
 use carry_cli::error::InputError;
-use carry_cli::params::Params;
+use carry_cli::params::{Key, Params};
 use carry_cli::report::{csv_columns, csv_values};
+use carry_cli::scene::SCENE_KEYS;
+use carry_core::{PreparedScene, Real};
 use rayon::prelude::*;
 
 /// Rows per parallel work item.
@@ -32,11 +34,12 @@ fn params(req: &Request, columns: &[&[f64]], i: usize) -> Result<Params, InputEr
     Ok(p)
 }
 
-/// Computes the rows from `first` into `out` (row-major, `width` values a row); returns
-/// the failed rows.
-fn block(
+/// Computes the rows from `first` into `out` (row-major, `width` values a row) in
+/// precision `T`, flying through `scene` if given; returns the failed rows.
+fn block<T: Real>(
     req: &Request,
     columns: &[&[f64]],
+    scene: Option<&PreparedScene<T>>,
     first: usize,
     out: &mut [f64],
     width: usize,
@@ -45,8 +48,8 @@ fn block(
     let mut row = Vec::with_capacity(width);
     for (k, slot) in out.chunks_exact_mut(width).enumerate() {
         let i = first + k;
-        let result =
-            params(req, columns, i).and_then(|p| compute::run(req.mode, &p, &req.numerics));
+        let result = params(req, columns, i)
+            .and_then(|p| compute::run_in_scene::<T>(req.mode, &p, &req.numerics, scene, None));
         match result {
             Ok(r) => {
                 row.clear();
@@ -62,17 +65,38 @@ fn block(
     failed
 }
 
+/// Whether every row flies through the same scene with the same ball: then the scene is
+/// prepared once for the call instead of once a row.
+fn shared_scene(req: &Request) -> bool {
+    req.mode != Mode::Impact
+        && !req
+            .keys
+            .iter()
+            .any(|k| SCENE_KEYS.contains(k) || matches!(k, Key::BallMass | Key::BallRadius))
+}
+
 /// Runs `req` over `rows` rows; `columns[j]` holds the values of `req.keys[j]`, each of
 /// length `rows`. Blocks of rows run in parallel, each writing its part of the output.
 #[must_use]
 pub fn run(req: &Request, columns: &[&[f64]], rows: usize) -> Output {
+    match req.numerics.precision {
+        Precision::F32 => run_in::<f32>(req, columns, rows),
+        Precision::F64 => run_in::<f64>(req, columns, rows),
+    }
+}
+
+fn run_in<T: Real>(req: &Request, columns: &[&[f64]], rows: usize) -> Output {
     let names = csv_columns(req.mode, req.ground);
     let width = names.len();
+    // A scene that fails to prepare is left to each row, which reports it in order.
+    let scene = shared_scene(req)
+        .then(|| compute::prepared_scene::<T>(&req.base).ok())
+        .flatten();
     let mut data = vec![0.0; rows * width];
     let failed = data
         .par_chunks_mut(BLOCK * width)
         .enumerate()
-        .flat_map_iter(|(b, out)| block(req, columns, b * BLOCK, out, width))
+        .flat_map_iter(|(b, out)| block(req, columns, scene.as_ref(), b * BLOCK, out, width))
         .collect();
     Output {
         names,
