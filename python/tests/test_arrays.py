@@ -120,3 +120,18 @@ def test_per_row_ground_options_add_ground_columns():
     r = carry.flight(stimp=[8, 10, 12], ground="green", ball_speed=30, launch_angle=30, spin=6000)
     assert r["total_m"].shape == (3,)
     assert np.all(np.isfinite(r["total_m"]))
+
+
+def test_shared_scene_equals_per_row_scene():
+    # A scalar scene is prepared once per call; a per-row scene value once per row.
+    speeds = np.linspace(40, 80, 7)
+    shared = carry.flight(ball_speed=speeds, air_density=1.1, wind_speed=3, wind_direction=45)
+    per_row = carry.flight(ball_speed=speeds, air_density=np.full(7, 1.1), wind_speed=3, wind_direction=45)
+    for key in carry.columns("flight"):
+        np.testing.assert_array_equal(shared[key], per_row[key], err_msg=key)
+
+
+def test_empty_arrays_give_empty_results():
+    r = carry.flight(ball_speed=np.zeros((0, 3)))
+    assert r["carry_m"].shape == (0, 3)
+    assert r["errors"].shape == (0, 3)
