@@ -116,8 +116,8 @@ def _option_text(mode: str, name: str, kind: str, value: Any) -> str:
 def _numeric_array(name: str, kind: str, value: Any) -> np.ndarray:
     if kind == "radius" and isinstance(value, str) and value.strip().lower() == "flat":
         return np.asarray(np.inf)
-    if isinstance(value, (str, bytes)):
-        raise ValueError(f"{name}: expected a number or an array of numbers, got str")
+    if isinstance(value, (str, bytes)) or np.asarray(value).dtype.kind in "USV":
+        raise ValueError(f"{name}: expected a number or an array of numbers, got text")
     try:
         arr = np.asarray(value, dtype=np.float64)
     except (TypeError, ValueError):

@@ -89,6 +89,7 @@ def test_raise_on_error_raises_the_first_bad_row():
         (carry.shot, dict(clubspeed=45), "clubspeed"),
         (carry.shot, dict(club_speed="fast"), "club_speed"),
         (carry.shot, dict(club_speed=[1j]), "club_speed"),
+        (carry.shot, dict(club_speed=["45"]), "club_speed"),
         (carry.shot, dict(club="putter"), "club"),
         (carry.shot, dict(club=7), "club"),
         (carry.shot, dict(ball_speed=70), "ball_speed"),
