@@ -3,7 +3,8 @@
 //! The Python layer (`carry/__init__.py`) checks and broadcasts the keyword arguments and
 //! passes flat `float64` columns here; [`run`] resolves the options with the CLI's own
 //! option table ([`args`]), computes every row in parallel with the GIL released
-//! ([`rows`]) and returns one array per CLI batch column. [`fit`] is `carry fit --json`.
+//! ([`rows`]) into one (rows × columns) array whose columns are the CLI batch CSV's.
+//! [`fit_csv`] is `carry fit --json`.
 
 mod args;
 mod fit;
