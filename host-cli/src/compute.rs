@@ -11,7 +11,7 @@ use carry_core::real::{lit, to_f64};
 use carry_core::units::{deg, rpm, to_deg, to_rpm};
 use carry_core::{
     Ball, BallMotion, ClubHead, ClubSpec, Delivery, FaceLocation, FlightOutcome, Launch,
-    LaunchMetrics, Real, RunEnd,
+    LaunchMetrics, PreparedScene, Real, RunEnd,
 };
 use clap::ValueEnum;
 use nalgebra::{Matrix3, Vector3};
@@ -392,6 +392,32 @@ pub fn run_in<T: Real>(
     n: &Numerics,
     trace: Option<&mut Vec<[f64; 3]>>,
 ) -> Result<Report, InputError> {
+    run_in_scene::<T>(mode, p, n, None, trace)
+}
+
+/// The scene of `p` prepared for its ball, in precision `T`: what [`run_in`] flies
+/// through. Many shots that share a scene and a ball may prepare it once and pass it to
+/// [`run_in_scene`].
+///
+/// # Errors
+/// An invalid ball or scene, naming the option.
+pub fn prepared_scene<T: Real>(p: &Params) -> Result<PreparedScene<T>, InputError> {
+    let ball = ball::<T>(p)?;
+    Ok(crate::scene::build::<T>(&p.scene)?.prepare(&ball)?)
+}
+
+/// As [`run_in`], flying through `scene` when given: it must be [`prepared_scene`] of
+/// a `Params` with the same scene and ball as `p`.
+///
+/// # Errors
+/// An [`InputError`] naming the option at fault.
+pub fn run_in_scene<T: Real>(
+    mode: Mode,
+    p: &Params,
+    n: &Numerics,
+    scene: Option<&PreparedScene<T>>,
+    trace: Option<&mut Vec<[f64; 3]>>,
+) -> Result<Report, InputError> {
     let ball = ball::<T>(p)?;
     let (motion, launch, club_after, impulse) = match mode {
         Mode::Impact | Mode::Shot => {
@@ -416,7 +442,14 @@ pub fn run_in<T: Real>(
     let flight = if mode == Mode::Impact {
         None
     } else {
-        let scene = crate::scene::build::<T>(&p.scene)?.prepare(&ball)?;
+        let owned;
+        let scene = match scene {
+            Some(s) => s,
+            None => {
+                owned = crate::scene::build::<T>(&p.scene)?.prepare(&ball)?;
+                &owned
+            }
+        };
         let integrator = n.integrator::<T>();
         let outcome = match trace {
             None => scene.fly(&motion, &integrator, None)?,

@@ -389,10 +389,20 @@ impl FitCmd {
 /// Runs `carry fit`.
 ///
 /// # Errors
-/// Bad input (status 2); a fit that cannot start or a file that cannot be written.
+/// As [`report`], or stdout cannot be written.
 pub fn run(cmd: &FitCmd) -> Result<(), Failure> {
+    crate::write_stdout(report(cmd)?.as_bytes())
+}
+
+/// Fits (or evaluates) as `cmd` asks, writes `--output` if given, and returns what
+/// `carry fit` prints: the table, or the JSON document with `--json` (also the Python
+/// package's `carry.fit`).
+///
+/// # Errors
+/// Bad input (status 2); a fit that cannot start or a file that cannot be written.
+pub fn report(cmd: &FitCmd) -> Result<String, Failure> {
     if cmd.family == crate::fit_contact::FAMILY {
-        return crate::fit_contact::run(cmd);
+        return crate::fit_contact::report(cmd);
     }
     let evaluate = match &cmd.evaluate {
         Some(name) => {
@@ -484,7 +494,7 @@ pub fn run(cmd: &FitCmd) -> Result<(), Failure> {
     } else {
         table(family, &result, &ignored, cmd)
     };
-    crate::write_stdout(text.as_bytes())
+    Ok(text)
 }
 
 fn family_name(f: AeroFamily) -> &'static str {

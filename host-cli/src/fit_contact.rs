@@ -19,12 +19,13 @@ use std::io::{IsTerminal as _, Read as _};
 /// The family's name on the command line.
 pub const FAMILY: &str = "compliant";
 
-/// Runs `carry fit --family compliant`.
+/// Runs `carry fit --family compliant`: what it prints (table or JSON), as
+/// [`crate::fit::report`].
 ///
 /// # Errors
 /// Bad input or a law that is not compliant (status 2); a fit that fails or a file that
 /// cannot be written.
-pub fn run(cmd: &FitCmd) -> Result<(), Failure> {
+pub fn report(cmd: &FitCmd) -> Result<String, Failure> {
     let (problem, given) = match &cmd.evaluate {
         Some(name) => {
             let law = crate::contact::parse(name).map_err(|e| InputError::new("evaluate", e))?;
@@ -104,7 +105,7 @@ pub fn run(cmd: &FitCmd) -> Result<(), Failure> {
     } else {
         table(&result, problem.friction, cmd)
     };
-    crate::write_stdout(text.as_bytes())
+    Ok(text)
 }
 
 /// The readable report (ball speed in mph, angles in degrees, spin in rpm).

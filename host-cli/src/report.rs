@@ -369,6 +369,68 @@ pub fn write_csv_empty(out: &mut Vec<u8>, mode: Mode, ground: bool) {
     out.resize(out.len() + n, b',');
 }
 
+/// Appends the result values of `r` in [`csv_columns`] order as numbers (counts as
+/// floats, `still_rolling` as 1/0, what `r` lacks as NaN): the Python package's arrays.
+pub fn csv_values(out: &mut Vec<f64>, mode: Mode, ground: bool, r: &Report) {
+    let l = &r.launch;
+    out.extend([
+        l.ball_speed_mps,
+        l.launch_angle_deg,
+        l.launch_direction_deg,
+        l.spin_rpm,
+        l.backspin_rpm,
+        l.sidespin_rpm,
+        l.spin_axis_deg,
+    ]);
+    if mode != Mode::Flight {
+        out.push(l.smash_factor.unwrap_or(f64::NAN));
+    }
+    out.extend(l.ball_velocity_mps);
+    out.extend(l.ball_spin_radps);
+    let nan = [f64::NAN; 3];
+    if mode != Mode::Flight {
+        out.extend(r.club_after.map_or(nan, |c| c.velocity_mps));
+        out.extend(r.club_after.map_or(nan, |c| c.spin_radps));
+        out.extend(r.impulse_ns.unwrap_or(nan));
+    }
+    if mode == Mode::Impact {
+        return;
+    }
+    match &r.flight {
+        Some(g) => {
+            out.extend([
+                g.carry_m,
+                g.side_m,
+                g.carry_x_m,
+                g.apex_m,
+                g.apex_time_s,
+                g.flight_time_s,
+                g.land_angle_deg,
+                g.land_speed_mps,
+                g.land_spin_rpm,
+            ]);
+            out.extend(g.landing_position_m);
+            out.push(f64::from(g.force_evaluations));
+            out.extend(g.landing_velocity_mps);
+            out.push(g.air_density_kgm3);
+            out.push(f64::from(g.steps));
+            out.push(f64::from(g.rejected_steps));
+        }
+        None => out.extend(FLIGHT_COLUMNS.iter().map(|_| f64::NAN)),
+    }
+    if ground {
+        match r.flight.and_then(|g| g.ground) {
+            Some(g) => {
+                out.extend([g.total_m, g.roll_m, f64::from(g.bounces)]);
+                out.extend(g.rest_position_m);
+                out.push(g.time_to_rest_s);
+                out.push(if g.still_rolling { 1.0 } else { 0.0 });
+            }
+            None => out.extend(GROUND_COLUMNS.iter().map(|_| f64::NAN)),
+        }
+    }
+}
+
 /// One CSV header plus one row (the `--csv` output of a single command).
 #[must_use]
 pub fn single_csv(mode: Mode, r: &Report) -> Vec<u8> {
@@ -542,6 +604,37 @@ mod tests {
     fn integers() {
         for n in [0u32, 7, 10, 4_294_967_295] {
             assert_eq!(itoa_u32(n).as_bytes_mut(), n.to_string().as_bytes());
+        }
+    }
+
+    /// The numeric row matches the CSV row, column for column, in every mode.
+    #[test]
+    fn csv_values_follow_the_csv_columns() {
+        use crate::compute::{Numerics, run};
+        use crate::params::{Key, Params};
+        let mut p = Params::default();
+        Key::Ground.set(
+            &mut p,
+            Units::Si,
+            Key::Ground.parse("fairway").expect("a surface"),
+        );
+        for mode in [Mode::Impact, Mode::Flight, Mode::Shot] {
+            let r = run(mode, &p, &Numerics::default()).expect("the defaults fly");
+            let ground = mode != Mode::Impact;
+            let mut values = Vec::new();
+            csv_values(&mut values, mode, ground, &r);
+            let text = String::from_utf8(single_csv(mode, &r)).expect("UTF-8");
+            let row: Vec<&str> = text.lines().nth(1).unwrap_or_default().split(',').collect();
+            assert_eq!(values.len(), csv_columns(mode, ground).len());
+            assert_eq!(values.len(), row.len());
+            for (v, t) in values.iter().zip(row) {
+                let t = match t {
+                    "true" => 1.0,
+                    "false" => 0.0,
+                    t => t.parse().expect("a number"),
+                };
+                assert_eq!(*v, t);
+            }
         }
     }
 }

@@ -1,0 +1,290 @@
+"""carry: golf impact and ball flight over numpy arrays.
+
+The Rust engine of the ``carry`` command line, called from Python:
+
+* :func:`impact` — club delivery → ball launch (``carry impact``),
+* :func:`flight` — launch → flight (``carry flight``),
+* :func:`shot` — delivery → launch → flight (``carry shot``),
+* :func:`fit` — fit an aerodynamic model or contact law to measured shots (``carry fit``).
+
+Keyword arguments are the command line's options in snake_case (``club_speed``,
+``launch_angle``, ``wind_speed``, ``club``, ``aero``, ``ground``, ``precision``, ``units``,
+…) in the same units (``units="imperial"`` for mph, yards, feet, inches and °F; results are
+always SI). Numeric arguments take scalars or numpy arrays, broadcast together by numpy's
+rules; every element is one shot, computed in parallel on all cores with the GIL released.
+
+The result is a dict of float64 arrays of the broadcast shape, keyed like the CLI's batch
+CSV columns (``carry_m``, ``apex_m``, ``ball_speed_mps``, ``landing_position_m_x``, …),
+plus ``errors``: an object array holding ``None`` or the message of a row that failed
+(its numbers are NaN). ``raise_on_error=True`` raises :class:`ShotError` instead.
+
+    >>> import numpy as np, carry
+    >>> r = carry.flight(ball_speed=np.linspace(60, 80, 5), launch_angle=12, spin=2500)
+    >>> r["carry_m"].shape
+    (5,)
+"""
+
+from __future__ import annotations
+
+import csv
+import math
+import os
+import tempfile
+from typing import Any, Dict, Mapping
+
+import numpy as np
+
+from . import _carry
+
+__all__ = ["impact", "flight", "shot", "fit", "columns", "inputs", "ShotError"]
+__version__ = "0.1.0"
+
+_NUMERIC = ("number", "radius")
+_TEXT = ("preset", "contact", "aero", "ground")
+_INPUTS = {mode: dict(_carry.inputs(mode)) for mode in ("impact", "flight", "shot")}
+_ALL_NAMES = set().union(*_INPUTS.values())
+
+
+class ShotError(ValueError):
+    """A row failed and ``raise_on_error=True``: :attr:`index` is its position in the
+    broadcast shape, :attr:`message` the reason (``"club_speed: must be positive"``)."""
+
+    def __init__(self, index: tuple, message: str) -> None:
+        super().__init__(f"row {index}: {message}")
+        self.index = index
+        self.message = message
+
+
+def inputs(mode: str) -> Dict[str, str]:
+    """The keyword arguments of ``impact``, ``flight`` or ``shot`` and their kinds
+    (``number``, ``radius``, ``vector``, ``tensor``, ``preset``, ``contact``, ``aero``,
+    ``bool``, ``ground`` or ``setting``)."""
+    if mode not in _INPUTS:
+        raise ValueError(f"mode: unknown '{mode}' (one of: impact, flight, shot)")
+    return dict(_INPUTS[mode])
+
+
+def columns(mode: str, ground: bool = False) -> list:
+    """The result keys of ``mode`` (without ``errors``), in the CLI's CSV column order;
+    ``ground`` adds the bounce-and-roll columns (``total_m``, ``roll_m``, …)."""
+    return list(_carry.columns(mode, ground))
+
+
+def _number_text(name: str, value: Any) -> str:
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float, np.number)):
+        raise ValueError(f"{name}: expected a number, got {type(value).__name__}")
+    x = float(value)
+    if not math.isfinite(x):
+        raise ValueError(f"{name}: '{x}' is not a finite number")
+    return repr(x)
+
+
+def _option_text(mode: str, name: str, kind: str, value: Any) -> str:
+    """The CLI text of a whole-call option."""
+    if kind == "setting":
+        if name in ("step", "tolerance"):
+            return _number_text(name, value)
+        if name == "scene" and isinstance(value, os.PathLike):
+            return os.fspath(value)
+        if not isinstance(value, str):
+            raise ValueError(f"{name}: expected a string, got {type(value).__name__}")
+        return value
+    if kind == "bool":
+        if not isinstance(value, (bool, np.bool_)):
+            raise ValueError(f"{name}: expected True or False, got {type(value).__name__}")
+        return "true" if value else "false"
+    if kind in ("vector", "tensor"):
+        sizes = (3,) if kind == "vector" else (3, 9)
+        try:
+            v = np.asarray(value, dtype=np.float64)
+        except (TypeError, ValueError):
+            raise ValueError(f"{name}: expected {' or '.join(map(str, sizes))} numbers") from None
+        if v.ndim != 1 or v.size not in sizes:
+            raise ValueError(
+                f"{name}: expected {' or '.join(map(str, sizes))} numbers, got shape {v.shape}"
+                + (f" (per-row values: {name}_x, {name}_y, {name}_z)" if kind == "vector" else "")
+            )
+        return ",".join(repr(float(x)) for x in v)
+    # preset, contact, aero, ground: a name or a file
+    if isinstance(value, os.PathLike):
+        return os.fspath(value)
+    if not isinstance(value, str):
+        raise ValueError(f"{name}: expected a name (str), got {type(value).__name__}")
+    return value
+
+
+def _numeric_array(name: str, kind: str, value: Any) -> np.ndarray:
+    if kind == "radius" and isinstance(value, str) and value.strip().lower() == "flat":
+        return np.asarray(np.inf)
+    if isinstance(value, (str, bytes)) or np.asarray(value).dtype.kind in "USV":
+        raise ValueError(f"{name}: expected a number or an array of numbers, got text")
+    try:
+        arr = np.asarray(value, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise ValueError(
+            f"{name}: expected a number or an array of numbers, got {type(value).__name__}"
+        ) from None
+    return arr
+
+
+def _run(mode: str, kwargs: Mapping[str, Any], raise_on_error: bool) -> Dict[str, np.ndarray]:
+    kinds = _INPUTS[mode]
+    names, arrays, options = [], [], []
+    for name, value in kwargs.items():
+        kind = kinds.get(name)
+        if kind is None:
+            if name in _ALL_NAMES:
+                raise ValueError(f"{name}: is not an argument of carry.{mode}")
+            raise ValueError(f"{name}: unknown argument of carry.{mode}")
+        if value is None:
+            continue
+        if kind in _NUMERIC:
+            names.append(name)
+            arrays.append(_numeric_array(name, kind, value))
+        else:
+            options.append((name, _option_text(mode, name, kind, value)))
+    try:
+        shape = np.broadcast_shapes(*(a.shape for a in arrays)) if arrays else ()
+    except ValueError:
+        shapes = ", ".join(f"{n} {a.shape}" for n, a in zip(names, arrays))
+        raise ValueError(f"{', '.join(names)}: shapes do not broadcast ({shapes})") from None
+    rows = math.prod(shape)
+    flat = [np.ascontiguousarray(np.broadcast_to(a, shape), dtype=np.float64).reshape(-1) for a in arrays]
+    keys, data, failed = _carry.run(mode, names, flat, options, rows)
+    if raise_on_error and failed:
+        i, message = failed[0]
+        raise ShotError(tuple(int(j) for j in np.unravel_index(i, shape)), message)
+    # Column views of the (rows, columns) result: no copy.
+    out: Dict[str, Any] = {k: data[:, j].reshape(shape) for j, k in enumerate(keys)}
+    err = np.full(rows, None, dtype=object)
+    for i, message in failed:
+        err[i] = message
+    out["errors"] = err.reshape(shape)
+    return out
+
+
+def impact(*, raise_on_error: bool = False, **kwargs: Any) -> Dict[str, np.ndarray]:
+    """Club delivery → ball launch, as ``carry impact``.
+
+    Arguments: delivery (``club_speed``, ``attack_angle``, ``club_path``, ``face_angle``,
+    ``dynamic_loft``, ``lie``, ``club_spin`` or ``club_spin_x/_y/_z``, ``impact_height``,
+    ``impact_toe``), club (``club`` preset, ``contact``, ``club_mass``, ``loft``, ``cor``,
+    …), ball (``ball_mass``, ``ball_radius``), ``solver``, ``precision``, ``units``.
+    Returns the launch (``ball_speed_mps``, ``launch_angle_deg``, ``spin_rpm``,
+    ``smash_factor``, …), the club after impact and the impulse.
+    """
+    return _run("impact", kwargs, raise_on_error)
+
+
+def flight(*, raise_on_error: bool = False, **kwargs: Any) -> Dict[str, np.ndarray]:
+    """Launch → flight, as ``carry flight``.
+
+    Arguments: launch (``ball_speed``, ``launch_angle``, ``launch_direction``, and
+    ``backspin`` + ``sidespin`` or ``spin`` + ``spin_axis``), scene (``air_density`` or
+    ``temperature``, ``humidity``, ``pressure``/``altitude``; ``wind_speed`` +
+    ``wind_direction`` or ``wind``/``wind_x/_y/_z``; ``landing_height``, ``aero``,
+    ``ground``, ``stimp``, …, or a ``scene`` file), ``integrator``, ``step``,
+    ``tolerance``, ``precision``, ``units``.
+    Returns the launch and the flight (``carry_m``, ``side_m``, ``apex_m``,
+    ``flight_time_s``, ``landing_position_m_x``, …; with a ground ``total_m``, ``roll_m``, …).
+    """
+    return _run("flight", kwargs, raise_on_error)
+
+
+def shot(*, raise_on_error: bool = False, **kwargs: Any) -> Dict[str, np.ndarray]:
+    """Club delivery → launch → flight, as ``carry shot``: the arguments of
+    :func:`impact` and the scene and integrator arguments of :func:`flight`; returns the
+    columns of both."""
+    return _run("shot", kwargs, raise_on_error)
+
+
+def _column_text(values: np.ndarray) -> list:
+    if values.dtype.kind in "fiub":
+        return ["" if not math.isfinite(x) else repr(x) for x in values.astype(np.float64).tolist()]
+    out = []
+    for x in values.tolist():
+        if x is None or (isinstance(x, float) and math.isnan(x)):
+            out.append("")
+        elif isinstance(x, float):
+            out.append(repr(x))
+        else:
+            out.append(str(x))
+    return out
+
+
+def _table(data: Any) -> Dict[str, np.ndarray]:
+    """Columns of a DataFrame, a mapping of arrays or a structured array."""
+    if isinstance(data, np.ndarray) and data.dtype.names:
+        return {n: np.asarray(data[n]) for n in data.dtype.names}
+    if hasattr(data, "columns") and hasattr(data, "__getitem__"):  # pandas DataFrame
+        return {str(c): np.asarray(data[c]) for c in data.columns}
+    if isinstance(data, Mapping):
+        return {str(k): np.atleast_1d(np.asarray(v)) for k, v in data.items()}
+    raise ValueError(
+        f"data: expected a DataFrame, a dict of arrays, a structured array or a CSV path, "
+        f"got {type(data).__name__}"
+    )
+
+
+def fit(
+    data: Any,
+    *,
+    family: str = "modern",
+    evaluate: "str | None" = None,
+    output: "str | os.PathLike | None" = None,
+    cross_validation: bool = True,
+    units: str = "si",
+    air_density: "float | None" = None,
+    temperature: "float | None" = None,
+    humidity: "float | None" = None,
+    pressure: "float | None" = None,
+    altitude: "float | None" = None,
+) -> Dict[str, Any]:
+    """Fit a model family to measured shots, as ``carry fit --json``.
+
+    ``data``: a pandas DataFrame, a dict of arrays, a numpy structured array or a CSV
+    path, with ``carry fit``'s columns (``ball_speed``, ``launch_angle``, ``spin`` or
+    ``backspin``, ``carry``, ``apex``, ``land_angle``, …; a unit suffix such as ``_mph`` or
+    ``_yd`` overrides ``units``). ``family``: ``modern``, ``quintavalla`` or ``compliant``
+    (the contact law, on ``club_delivery.csv``'s columns). The conditions apply to rows
+    without their own. ``output`` writes the fitted model (TOML, for ``aero=``/``contact=``).
+
+    Returns the JSON document: ``family``, ``rows``, ``ignored_columns``,
+    ``coefficients`` (name → value) and ``fit`` (``parameters``, ``quantities``, per-row
+    ``rows`` with ``observed``/``predicted``/``loo_predicted``, ``summary`` and
+    ``loo_summary`` with mean and max errors, ``converged``, …).
+    """
+    import json
+
+    for name, value in (("air_density", air_density), ("temperature", temperature),
+                        ("humidity", humidity), ("pressure", pressure), ("altitude", altitude)):
+        if value is not None:
+            _number_text(name, value)
+    for name, value in (("family", family), ("units", units)):
+        if not isinstance(value, str):
+            raise ValueError(f"{name}: expected a string, got {type(value).__name__}")
+    opts = dict(
+        family=family,
+        evaluate=evaluate,
+        output=os.fspath(output) if output is not None else None,
+        cross_validation=bool(cross_validation),
+        units=units,
+        air_density=air_density,
+        temperature=temperature,
+        humidity=humidity,
+        pressure=pressure,
+        altitude=altitude,
+    )
+    if isinstance(data, (str, os.PathLike)):
+        return json.loads(_carry.fit_csv(os.fspath(data), **opts))
+    table = _table(data)
+    lengths = {len(v) for v in table.values()}
+    if len(lengths) > 1:
+        raise ValueError("data: columns differ in length")
+    with tempfile.TemporaryDirectory() as tmp:
+        path = os.path.join(tmp, "shots.csv")
+        with open(path, "w", newline="") as f:
+            w = csv.writer(f)
+            w.writerow(list(table))
+            w.writerows(zip(*(_column_text(v) for v in table.values())))
+        return json.loads(_carry.fit_csv(path, **opts))

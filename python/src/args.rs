@@ -1,0 +1,270 @@
+//! Keyword arguments → one request: the options every row shares (a base [`Params`],
+//! numerics, units) and the keys of the per-row numeric columns.
+//!
+//! Names are the CLI's options in snake_case (its `params::Key` table), plus `units`,
+//! `scene`, `precision`, `solver`, `integrator`, `step` and `tolerance`. Options apply in the
+//! CLI's order: units, scene file, club, the other options, then each row's numbers.
+
+use carry_cli::batch::applies;
+use carry_cli::compute::{IntegratorChoice, Mode, Numerics, Precision, SolverChoice};
+use carry_cli::error::InputError;
+use carry_cli::params::{Key, Kind, Params, Value, parse_finite};
+use carry_cli::units::Units;
+use clap::ValueEnum;
+use std::fmt;
+
+/// A bad argument: which one and why (raised as `ValueError`).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct ArgError {
+    /// The argument's name.
+    pub arg: String,
+    /// Why it is rejected.
+    pub reason: String,
+}
+
+impl ArgError {
+    fn new(arg: &str, reason: impl Into<String>) -> Self {
+        Self {
+            arg: arg.to_owned(),
+            reason: reason.into(),
+        }
+    }
+}
+
+impl fmt::Display for ArgError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}: {}", self.arg, self.reason)
+    }
+}
+
+impl From<InputError> for ArgError {
+    fn from(e: InputError) -> Self {
+        Self::new(e.key, e.reason)
+    }
+}
+
+/// The arguments that are settings of the whole call, not shot inputs.
+pub const SETTINGS: &[&str] = &[
+    "units",
+    "scene",
+    "precision",
+    "solver",
+    "integrator",
+    "step",
+    "tolerance",
+];
+
+/// Whether setting `name` means something for `mode`.
+fn setting_applies(mode: Mode, name: &str) -> bool {
+    match name {
+        "solver" => mode != Mode::Flight,
+        "scene" | "integrator" | "step" | "tolerance" => mode != Mode::Impact,
+        _ => true,
+    }
+}
+
+/// The kind of a key as the Python layer sees it.
+#[must_use]
+pub fn kind_name(kind: Kind) -> &'static str {
+    match kind {
+        Kind::Number => "number",
+        Kind::Radius => "radius",
+        Kind::Vector => "vector",
+        Kind::Tensor => "tensor",
+        Kind::Preset => "preset",
+        Kind::Contact => "contact",
+        Kind::Aero => "aero",
+        Kind::Bool => "bool",
+        Kind::Ground => "ground",
+    }
+}
+
+/// The arguments `mode` takes: shot inputs with their kind, then the settings (`setting`).
+#[must_use]
+pub fn inputs(mode: Mode) -> Vec<(&'static str, &'static str)> {
+    Key::ALL
+        .iter()
+        .filter(|k| applies(mode, **k))
+        .map(|k| (k.name(), kind_name(k.kind())))
+        .chain(
+            SETTINGS
+                .iter()
+                .filter(|s| setting_applies(mode, s))
+                .map(|s| (*s, "setting")),
+        )
+        .collect()
+}
+
+/// The command name of `mode`, for messages.
+#[must_use]
+pub fn mode_name(mode: Mode) -> &'static str {
+    match mode {
+        Mode::Impact => "impact",
+        Mode::Flight => "flight",
+        Mode::Shot => "shot",
+    }
+}
+
+/// One call: shared options and the per-row keys.
+#[derive(Debug, Clone)]
+pub struct Request {
+    /// What to compute.
+    pub mode: Mode,
+    /// The options every row shares, in SI.
+    pub base: Params,
+    /// Numerical settings.
+    pub numerics: Numerics,
+    /// Units of the input values.
+    pub units: Units,
+    /// The key of each numeric column, in column order.
+    pub keys: Vec<Key>,
+    /// Whether the output has the ground's columns.
+    pub ground: bool,
+}
+
+fn value_enum<E: ValueEnum>(arg: &str, text: &str) -> Result<E, ArgError> {
+    E::from_str(text.trim(), true).map_err(|_| {
+        let names: Vec<String> = E::value_variants()
+            .iter()
+            .filter_map(|v| v.to_possible_value().map(|p| p.get_name().to_owned()))
+            .collect();
+        ArgError::new(
+            arg,
+            format!("invalid value '{text}' (one of: {})", names.join(", ")),
+        )
+    })
+}
+
+fn key_of(mode: Mode, name: &str) -> Result<Key, ArgError> {
+    let key = Key::find(name)
+        .filter(|k| k.name() == name)
+        .ok_or_else(|| ArgError::new(name, "unknown argument"))?;
+    if applies(mode, key) {
+        Ok(key)
+    } else {
+        Err(ArgError::new(
+            name,
+            format!("is not an input of carry.{}", mode_name(mode)),
+        ))
+    }
+}
+
+/// Is `key` one of the ground's options (which add the ground's output columns)?
+fn is_ground_key(key: Key) -> bool {
+    matches!(
+        key,
+        Key::Ground
+            | Key::Stimp
+            | Key::GroundSlope
+            | Key::GroundSlopeDirection
+            | Key::GroundRestitution
+            | Key::GroundFriction
+            | Key::RollingResistance
+            | Key::CraterScale
+    )
+}
+
+/// Resolves the options (name, text) and the names of the numeric columns.
+///
+/// # Errors
+/// An [`ArgError`] naming the first bad argument.
+pub fn request(
+    mode: Mode,
+    options: &[(String, String)],
+    columns: &[String],
+) -> Result<Request, ArgError> {
+    let mut units = Units::Si;
+    let mut numerics = Numerics::default();
+    let mut base = Params::default();
+    let get = |name: &str| {
+        options
+            .iter()
+            .find(|(n, _)| n == name)
+            .map(|(_, t)| t.as_str())
+    };
+    if let Some(t) = get("units") {
+        units = value_enum::<Units>("units", t)?;
+    }
+    for (name, _) in options {
+        if SETTINGS.contains(&name.as_str()) && !setting_applies(mode, name) {
+            return Err(ArgError::new(
+                name,
+                format!("is not a setting of carry.{}", mode_name(mode)),
+            ));
+        }
+    }
+    if let Some(path) = get("scene") {
+        carry_cli::scene::load_file(std::path::Path::new(path), units, &mut base)?;
+    }
+    if let Some(t) = get("precision") {
+        numerics.precision = value_enum::<Precision>("precision", t)?;
+    }
+    if let Some(t) = get("solver") {
+        numerics.solver = value_enum::<SolverChoice>("solver", t)?;
+    }
+    if let Some(t) = get("integrator") {
+        numerics.integrator = value_enum::<IntegratorChoice>("integrator", t)?;
+    }
+    if let Some(t) = get("step") {
+        numerics.step_s = Some(parse_finite(t).map_err(|r| ArgError::new("step", r))?);
+    }
+    if let Some(t) = get("tolerance") {
+        numerics.tolerance = Some(parse_finite(t).map_err(|r| ArgError::new("tolerance", r))?);
+    }
+    numerics.check()?;
+    // The club first: component overrides (cg_to_face_x, …) start from its preset.
+    let mut keyed: Vec<(Key, &str)> = Vec::new();
+    for (name, text) in options {
+        if SETTINGS.contains(&name.as_str()) {
+            continue;
+        }
+        keyed.push((key_of(mode, name)?, text));
+    }
+    keyed.sort_by_key(|(k, _)| *k != Key::Club);
+    for (key, text) in &keyed {
+        let value = key.parse(text)?;
+        key.set(&mut base, units, value);
+    }
+    let mut keys = Vec::with_capacity(columns.len());
+    for name in columns {
+        let key = key_of(mode, name)?;
+        if !matches!(key.kind(), Kind::Number | Kind::Radius) {
+            return Err(ArgError::new(
+                name,
+                format!("takes a {} value, not numbers", kind_name(key.kind())),
+            ));
+        }
+        keys.push(key);
+    }
+    let ground = mode != Mode::Impact
+        && (!base.scene.ground.is_empty()
+            || keyed.iter().any(|(k, _)| is_ground_key(*k))
+            || keys.iter().any(|k| is_ground_key(*k)));
+    Ok(Request {
+        mode,
+        base,
+        numerics,
+        units,
+        keys,
+        ground,
+    })
+}
+
+/// Checks one row's value for `key` as the CLI's text parser would.
+///
+/// # Errors
+/// The message for the row, naming the key.
+pub fn check_value(key: Key, x: f64) -> Result<Value, InputError> {
+    let ok = match key.kind() {
+        Kind::Radius => !x.is_nan() && x != f64::NEG_INFINITY,
+        _ => x.is_finite(),
+    };
+    if ok {
+        Ok(Value::Number(x))
+    } else {
+        Err(InputError::new(
+            key.name(),
+            format!("'{x}' is not a finite number"),
+        ))
+    }
+}

@@ -1,0 +1,96 @@
+//! `carry.fit`: the CLI's `carry fit --json` on a CSV file the Python layer writes.
+
+use carry_cli::error::Failure;
+use carry_cli::fit::{FitCmd, report};
+use carry_cli::units::Units;
+use clap::ValueEnum;
+use std::path::PathBuf;
+
+/// The options of a fit, as Python passes them.
+#[derive(Debug, Clone, Default)]
+pub struct FitArgs {
+    /// The CSV file of measured shots.
+    pub input: PathBuf,
+    /// Model family (`modern`, `quintavalla`, `compliant`).
+    pub family: String,
+    /// Evaluate this model instead of fitting.
+    pub evaluate: Option<String>,
+    /// Write the fitted model here (TOML).
+    pub output: Option<PathBuf>,
+    /// Run the leave-one-out cross-validation.
+    pub cross_validation: bool,
+    /// Input units (`si`, `imperial`).
+    pub units: Option<String>,
+    /// Air density of rows without conditions (kg/m³).
+    pub air_density: Option<f64>,
+    /// Temperature of rows without conditions.
+    pub temperature: Option<f64>,
+    /// Relative humidity of rows without conditions (%).
+    pub humidity: Option<f64>,
+    /// Station pressure of rows without conditions (Pa).
+    pub pressure: Option<f64>,
+    /// Altitude of rows without conditions.
+    pub altitude: Option<f64>,
+}
+
+/// Why a fit failed: bad input (`ValueError`) or the fit itself (`RuntimeError`).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum FitError {
+    /// A bad argument or input value: the argument and why.
+    Input(String),
+    /// The fit could not run or a file could not be written.
+    Failed(String),
+}
+
+/// Runs the fit; returns `carry fit --json`'s document.
+///
+/// # Errors
+/// A [`FitError`].
+pub fn run(args: &FitArgs) -> Result<String, FitError> {
+    let units = match &args.units {
+        Some(t) => Units::from_str(t, true).map_err(|_| {
+            FitError::Input(format!("units: invalid value '{t}' (one of: si, imperial)"))
+        })?,
+        None => Units::Si,
+    };
+    if args.air_density.is_some()
+        && (args.temperature.is_some()
+            || args.humidity.is_some()
+            || args.pressure.is_some()
+            || args.altitude.is_some())
+    {
+        return Err(FitError::Input(
+            "air_density: give either the air density or the weather, not both".into(),
+        ));
+    }
+    if args.pressure.is_some() && args.altitude.is_some() {
+        return Err(FitError::Input(
+            "pressure: give either the pressure or the altitude, not both".into(),
+        ));
+    }
+    if args.output.is_some() && args.evaluate.is_some() {
+        return Err(FitError::Input(
+            "output: cannot be used with evaluate".into(),
+        ));
+    }
+    let cmd = FitCmd {
+        input: args.input.clone(),
+        family: args.family.clone(),
+        output: args.output.clone(),
+        evaluate: args.evaluate.clone(),
+        no_cross_validation: !args.cross_validation,
+        units,
+        json: true,
+        no_progress: true,
+        air_density: args.air_density,
+        temperature: args.temperature,
+        humidity: args.humidity,
+        pressure: args.pressure,
+        altitude: args.altitude,
+    };
+    report(&cmd).map_err(|e| match e {
+        Failure::Input(e) => FitError::Input(e.as_column()),
+        Failure::Io(e) => FitError::Failed(e.to_string()),
+        Failure::Other(m) => FitError::Failed(m),
+    })
+}
