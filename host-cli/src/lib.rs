@@ -59,6 +59,47 @@ where
     }
 }
 
+/// Why [`analysis`] failed.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum AnalysisFailure {
+    /// Invalid input (the CLI's exit status 2): one line naming the option.
+    Input(String),
+    /// Anything else (exit status 1), already a sentence.
+    Failed(String),
+}
+
+/// Runs one of the analyses of `lab` (`optimize`, `sweep`, `dispersion`, `normalize`) from
+/// its command line `args` (program name first, then the subcommand and its options, as on
+/// the terminal) and returns what the command prints instead of writing it: the Python
+/// package's `carry.optimize`, `carry.sweep`, … call this with `--json`.
+///
+/// # Errors
+/// [`AnalysisFailure::Input`] for a usage error, invalid input or another subcommand;
+/// [`AnalysisFailure::Failed`] when a file cannot be written.
+pub fn analysis<I, T>(args: I) -> Result<String, AnalysisFailure>
+where
+    I: IntoIterator<Item = T>,
+    T: Into<std::ffi::OsString> + Clone,
+{
+    let cli = Cli::try_parse_from(args).map_err(|e| AnalysisFailure::Input(usage_line(&e)))?;
+    let out = match cli.command {
+        Command::Optimize(c) => c.run(),
+        Command::Sweep(c) => c.run(),
+        Command::Dispersion(c) => c.run(),
+        Command::Normalize(c) => c.run(),
+        _ => {
+            return Err(AnalysisFailure::Input(
+                "not an analysis: optimize, sweep, dispersion or normalize".to_owned(),
+            ));
+        }
+    };
+    out.map_err(|e| match e {
+        Failure::Input(e) => AnalysisFailure::Input(e.to_string()),
+        Failure::Io(e) => AnalysisFailure::Failed(e.to_string()),
+        Failure::Other(m) => AnalysisFailure::Failed(m),
+    })
+}
+
 /// Help and version print as clap renders them; a usage error prints its first line only.
 fn usage_error(e: &clap::Error) -> ExitCode {
     use clap::error::ErrorKind;

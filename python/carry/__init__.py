@@ -5,7 +5,10 @@ The Rust engine of the ``carry`` command line, called from Python:
 * :func:`impact` — club delivery → ball launch (``carry impact``),
 * :func:`flight` — launch → flight (``carry flight``),
 * :func:`shot` — delivery → launch → flight (``carry shot``),
-* :func:`fit` — fit an aerodynamic model or contact law to measured shots (``carry fit``).
+* :func:`fit` — fit an aerodynamic model or contact law to measured shots (``carry fit``),
+* :func:`optimize`, :func:`sweep`, :func:`dispersion`, :func:`normalize` — the analyses
+  (``carry optimize``, …): the best delivery, the ball position along a swing, Monte-Carlo
+  dispersion, carry in standard conditions.
 
 Keyword arguments are the command line's options in snake_case (``club_speed``,
 ``launch_angle``, ``wind_speed``, ``club``, ``aero``, ``ground``, ``precision``, ``units``,
@@ -36,7 +39,10 @@ import numpy as np
 
 from . import _carry
 
-__all__ = ["impact", "flight", "shot", "fit", "columns", "inputs", "ShotError"]
+__all__ = [
+    "impact", "flight", "shot", "fit", "optimize", "sweep", "dispersion", "normalize",
+    "columns", "inputs", "ShotError",
+]
 __version__ = "0.1.0"
 
 _NUMERIC = ("number", "radius")
@@ -288,3 +294,69 @@ def fit(
             w.writerow(list(table))
             w.writerows(zip(*(_column_text(v) for v in table.values())))
         return json.loads(_carry.fit_csv(path, **opts))
+
+
+def _option_value(name: str, value: Any) -> str:
+    """One option value as the command line takes it: a number, a string or path, or a
+    sequence joined by commas (``dynamic_loft_range=(8, 20)``)."""
+    if isinstance(value, (str, os.PathLike)):
+        return os.fspath(value)
+    if isinstance(value, (list, tuple, np.ndarray)):
+        return ",".join(_number_text(name, v) for v in np.asarray(value).ravel())
+    if isinstance(value, (int, np.integer)) and not isinstance(value, (bool, np.bool_)):
+        return str(int(value))
+    return _number_text(name, value)
+
+
+def _analysis(command: str, kwargs: Mapping[str, Any]) -> Dict[str, Any]:
+    """``carry <command> --json`` with ``kwargs`` as its options (snake_case → ``--kebab-case``;
+    ``True`` gives a bare flag, ``False``/``None`` leaves the option out)."""
+    import json
+
+    argv = ["carry", command, "--json"]
+    for name, value in kwargs.items():
+        if name in ("json", "csv"):
+            raise ValueError(f"{name}: the Python functions always return the JSON document")
+        if value is None or value is False:
+            continue
+        flag = "--" + name.replace("_", "-")
+        if value is True:
+            argv.append(flag)
+        else:
+            argv.append(f"{flag}={_option_value(name, value)}")
+    return json.loads(_carry.analysis(argv))
+
+
+def optimize(**kwargs: Any) -> Dict[str, Any]:
+    """The delivery that maximises carry (or total, or minimises dispersion), as
+    ``carry optimize --json``: ``club``, ``club_speed``, ``dynamic_loft_range=(lo, hi)``,
+    ``attack_angle_range``, ``impact_height_range``, ``objective``, ``starts``, … With
+    ``chart=True``, ``club_speeds=(from, to, step)`` and ``attack_angles=(…)``: the optimizer
+    chart. Returns the JSON document (``dynamic_loft_deg``, ``attack_angle_deg``,
+    ``carry_m``, the launch, evaluations, flatness)."""
+    return _analysis("optimize", kwargs)
+
+
+def sweep(**kwargs: Any) -> Dict[str, Any]:
+    """Carry, side, launch and spin against the ball position along a swing, as
+    ``carry sweep --json``: ``swing`` (a CSV of club-head samples; without it the built-in
+    example swing), ``ball_positions=(from, to, step)``, the club and scene options."""
+    return _analysis("sweep", kwargs)
+
+
+def dispersion(**kwargs: Any) -> Dict[str, Any]:
+    """Monte-Carlo dispersion over delivery noise, as ``carry dispersion --json``:
+    ``face_angle_sd``, ``club_path_sd``, ``attack_angle_sd``, ``dynamic_loft_sd``,
+    ``club_speed_sd``, ``impact_height_sd``, ``impact_toe_sd``, ``shots``, ``seed``, … Returns
+    ``carry_mean_m``, ``carry_sd_m``, ``side_mean_m``, ``side_sd_m``, the covariance and the
+    95 % ellipse. No progress bar unless ``no_progress=False``."""
+    kwargs = dict(kwargs)
+    kwargs.setdefault("no_progress", True)
+    return _analysis("dispersion", kwargs)
+
+
+def normalize(**kwargs: Any) -> Dict[str, Any]:
+    """A launch's carry in standard conditions (sea level, 21 °C, 50 % RH, no wind) and in
+    the given ones, as ``carry normalize --json``: the launch options, the conditions and
+    ``to="standard"`` (default) or ``"conditions"``."""
+    return _analysis("normalize", kwargs)

@@ -196,3 +196,19 @@ def fit(
     altitude: float | None = None,
 ) -> Dict[str, Any]:
     """``carry fit --json`` on a DataFrame, dict of arrays, structured array or CSV path."""
+
+def optimize(**kwargs: Any) -> Dict[str, Any]:
+    """``carry optimize --json`` with ``kwargs`` as its options (snake_case)."""
+    ...
+
+def sweep(**kwargs: Any) -> Dict[str, Any]:
+    """``carry sweep --json`` with ``kwargs`` as its options (snake_case)."""
+    ...
+
+def dispersion(**kwargs: Any) -> Dict[str, Any]:
+    """``carry dispersion --json`` with ``kwargs`` as its options (snake_case)."""
+    ...
+
+def normalize(**kwargs: Any) -> Dict[str, Any]:
+    """``carry normalize --json`` with ``kwargs`` as its options (snake_case)."""
+    ...

@@ -4,7 +4,8 @@
 //! passes flat `float64` columns here; [`run`] resolves the options with the CLI's own
 //! option table ([`args`]), computes every row in parallel with the GIL released
 //! ([`rows`]) into one (rows × columns) array whose columns are the CLI batch CSV's.
-//! [`fit_csv`] is `carry fit --json`.
+//! [`fit_csv`] is `carry fit --json`; [`analysis`] runs `carry optimize`, `sweep`,
+//! `dispersion` and `normalize` with `--json`.
 
 mod args;
 mod fit;
@@ -123,6 +124,18 @@ fn fit_csv(
     })
 }
 
+/// One of the CLI's analyses (`optimize`, `sweep`, `dispersion`, `normalize`) from its
+/// argument vector (program name first); returns what the command prints. Invalid input
+/// raises `ValueError` with the CLI's one line (naming the option).
+#[pyfunction]
+fn analysis(py: Python<'_>, argv: Vec<String>) -> PyResult<String> {
+    py.detach(|| carry_cli::analysis(argv))
+        .map_err(|e| match e {
+            carry_cli::AnalysisFailure::Input(m) => PyValueError::new_err(m),
+            carry_cli::AnalysisFailure::Failed(m) => PyRuntimeError::new_err(m),
+        })
+}
+
 /// The native module.
 #[pymodule]
 fn _carry(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -130,6 +143,7 @@ fn _carry(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(run, m)?)?;
     m.add_function(wrap_pyfunction!(columns, m)?)?;
     m.add_function(wrap_pyfunction!(fit_csv, m)?)?;
+    m.add_function(wrap_pyfunction!(analysis, m)?)?;
     m.add("ARG_SETTINGS", args::SETTINGS.to_vec())?;
     Ok(())
 }
