@@ -111,7 +111,7 @@ pub(crate) fn rebound<T: Real>(
     let w = spin.dot(&b);
     // (No `hypot`: libm's single-precision one works in f64, software on a Cortex-M4F.)
     let speed = (vt * vt + vn * vn).sqrt();
-    let phi = vt.atan2(vn);
+    let phi = crate::geometry::atan2_first_quadrant(vt, vn);
     let tilt = turf.crater_scale
         * lit::<T>(CRATER_REFERENCE_RAD)
         * (speed / lit::<T>(CRATER_REFERENCE_SPEED_MPS))
