@@ -88,9 +88,10 @@ impl<T: Real> Dynamics<'_, T> {
         let mut ds = T::zero();
         if drag || lift || decay {
             let vr = if wind { v - p.wind.at(y[Y]) } else { v };
-            let speed = vr.norm_squared().sqrt();
+            let speed_sq = vr.norm_squared();
+            let speed = speed_sq.sqrt();
             if drag || lift {
-                let (kd, kl) = p.aero.forces.factors(speed, s, drag, lift);
+                let (kd, kl) = p.aero.forces.factors(speed, speed_sq, s, drag, lift);
                 if drag {
                     a -= vr * kd;
                 }

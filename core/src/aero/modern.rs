@@ -135,8 +135,13 @@ impl<T: Real> ModernAero<T> {
     /// The drag-crisis weight `1/(1 + (Re/Re_c)⁶)`: 1 far below the crisis, 0 far above.
     #[must_use]
     pub fn crisis(ratio: T) -> T {
-        let r2 = ratio * ratio;
-        T::one() / (T::one() + r2 * r2 * r2)
+        Self::crisis_of_square(ratio * ratio)
+    }
+
+    /// The same weight from the squared ratio `w = (Re/Re_c)²`: `1/(1 + w³)`.
+    #[must_use]
+    pub fn crisis_of_square(ratio_sq: T) -> T {
+        T::one() / (T::one() + ratio_sq * ratio_sq * ratio_sq)
     }
 
     /// `C_D(S, Re)`.
