@@ -61,7 +61,7 @@ pub fn atan2_first_quadrant<T: Real>(y: T, x: T) -> T {
     let steep = y > x;
     let (num, den) = if steep { (x, y) } else { (y, x) };
     if !(den > T::zero()) {
-        return if !(num == num && den == den) {
+        return if num.partial_cmp(&den).is_none() {
             num + den
         } else {
             T::zero()

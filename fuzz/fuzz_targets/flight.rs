@@ -129,9 +129,9 @@ fn run<T: Real>(b: &mut Bytes<'_>) -> Result<()> {
             cd_supercritical: lit(b.param(-0.1, 2.5)),
             cd_subcritical: lit(b.param(-0.1, 2.5)),
             reynolds_critical: lit(b.param(0.0, 2e7)),
-            cd_spin: lit(b.param(-0.5, 12.0)),
             cl_max: lit(b.param(-0.1, 2.5)),
-            cl_half_spin: lit(b.param(-0.1, 12.0)),
+            cl_saturation_spin: lit(b.param(-0.1, 12.0)),
+            cd_lift: lit(b.param(-0.5, 2.5)),
             cm_spin: lit(b.param(-0.01, 1.5)),
         }),
     };

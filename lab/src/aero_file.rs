@@ -4,7 +4,7 @@
 //! ```toml
 //! family = "modern"            # or "quintavalla" (the seed's linear family)
 //! cd_supercritical = 0.2       # coefficients by name; a missing one takes the value of
-//! cd_spin = 0.21               # the family's built-in model (tour2023 / quintavalla)
+//! cd_lift = 0.5                # the family's built-in model (tour2023 / quintavalla)
 //! ```
 
 use carry_core::aero::{AeroModel, BUILT_IN_MODELS, LINEAR_NAMES, LinearAero, MODERN_NAMES};

@@ -33,8 +33,11 @@ const F32_SPIN_REL: f64 = 1e-4;
 /// f32 vs f64 carry with the default integrators (m): the f32 default is documented to 1 cm
 /// of the reference on the golden set (docs/flight.md); with 30 m/s winds and 12,000 rpm
 /// the local error per step (tolerance 1e-6 × |y| ≈ 2e-4 m, and f32 rounding of ~200 m
-/// positions, 1.5e-5 m) accumulates over more steps: measured worst 6 cm; bound 0.1 m.
-const F32_CARRY_M: f64 = 0.1;
+/// positions, 1.5e-5 m) accumulates over more steps. With the calibrated aerodynamics (the
+/// drag crisis and the saturating lift, crossed many times by a ball riding a 30 m/s
+/// tailwind) the measured worst over 2,000 cases is 14 cm on a 440 m carry (a proptest
+/// find: 15.5 cm); bound 0.25 m.
+const F32_CARRY_M: f64 = 0.25;
 
 fn f32_matches_f64(s: &Scenario, solver: Solver) -> Result<(), TestCaseError> {
     let (Ok((c64, b64, s64)), Ok((c32, b32, s32))) = (s.build::<f64>(), s.build::<f32>()) else {

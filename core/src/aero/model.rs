@@ -126,22 +126,19 @@ impl<T: Real> AeroModel<T> {
                 // The seed's operation order, for bit identity with the golden files.
                 decay: half_rho_area * c.cm_spin * r * ball.diameter_m() / ball.inertia_kgm2(),
             },
-            Self::Modern(c) => PreparedAero {
-                forces: Forces::Modern {
-                    drag_v: a * c.cd_supercritical,
-                    drag_crisis: a * (c.cd_subcritical - c.cd_supercritical),
-                    crisis_per_speed_sq: {
-                        let per_speed =
-                            density * ball.diameter_m() / (viscosity * c.reynolds_critical);
-                        per_speed * per_speed
+            Self::Modern(c) => {
+                let per_speed = density * ball.diameter_m() / (viscosity * c.reynolds_critical);
+                PreparedAero {
+                    forces: Forces::Modern {
+                        drag_v: a * c.cd_supercritical,
+                        crisis: Crisis::new(a * (c.cd_subcritical - c.cd_supercritical), per_speed),
+                        drag_lift: a * c.cd_lift * c.cl_max,
+                        lift_v: a * c.cl_max,
+                        saturation_per_spin: r / c.cl_saturation_spin,
                     },
-                    drag_s: a * c.cd_spin * r,
-                    lift_max: a * c.cl_max * r,
-                    radius: r,
-                    lift_half: c.cl_half_spin,
-                },
-                decay: half_rho_area * r * ball.diameter_m() / ball.inertia_kgm2() * c.cm_spin,
-            },
+                    decay: half_rho_area * r * ball.diameter_m() / ball.inertia_kgm2() * c.cm_spin,
+                }
+            }
         })
     }
 }
@@ -178,24 +175,49 @@ pub(crate) enum Forces<T> {
         /// `A·c_l,sp·R` (1/rad).
         lift_s: T,
     },
-    /// `A·C_D·V = (drag_v + drag_crisis/(1 + (V²·crisis_per_speed_sq)³))·V + drag_s·s`,
-    /// `A·C_L·V = lift_max·s·V/(R·s + S_½·V)`.
+    /// With `x = S/S_sat` ([`ModernAero`]): `A·C_L·V = lift_v·saturation(x)·V`,
+    /// `A·C_D·V = (drag_v + A·(c_d,sub − c_d,super)·crisis + drag_lift·saturation(x))·V`.
     Modern {
         /// `A·c_d,super` (1/m).
         drag_v: T,
-        /// `A·(c_d,sub − c_d,super)` (1/m).
-        drag_crisis: T,
-        /// `(ρ·D/(μ·Re_c))²`: `(Re/Re_c)²` per unit squared speed (s²/m²).
-        crisis_per_speed_sq: T,
-        /// `A·c_d,S·R` (1/rad).
-        drag_s: T,
-        /// `A·c_l,max·R` (1/rad).
-        lift_max: T,
-        /// Ball radius R (m).
-        radius: T,
-        /// `S_½`.
-        lift_half: T,
+        /// The crisis term `A·(c_d,sub − c_d,super)·crisis·V`.
+        crisis: Crisis<T>,
+        /// `A·k_L·c_l,max` (1/m).
+        drag_lift: T,
+        /// `A·c_l,max` (1/m).
+        lift_v: T,
+        /// `R/S_sat` (m): `S/S_sat = saturation_per_spin·s/V`.
+        saturation_per_spin: T,
     },
+}
+
+/// The drag crisis factor `Δ·crisis = Δ/(1 + w³)` ([`ModernAero::crisis`]) from `q = V²`
+/// alone, `w = (Re/Re_c)² = q·k²`: its division runs beside the square root.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub(crate) struct Crisis<T> {
+    /// `Δ = A·(c_d,sub − c_d,super)` (1/m).
+    below: T,
+    /// `k² = (ρD/(μ·Re_c))²` (s²/m²).
+    per_speed_sq: T,
+}
+
+impl<T: Real> Crisis<T> {
+    /// The factor for `Δ = below` and `k = ρD/(μ·Re_c)` = `per_speed` (s/m).
+    fn new(below: T, per_speed: T) -> Self {
+        Self {
+            below,
+            per_speed_sq: per_speed * per_speed,
+        }
+    }
+
+    /// `Δ·crisis` at `q = V²`: `Δ/(1 + w³)`, one division (`Δ` in the numerator rather
+    /// than a multiply after it: it is on the force's critical path).
+    #[inline(always)]
+    fn at(&self, speed_sq: T) -> T {
+        let w = speed_sq * self.per_speed_sq;
+        self.below / (T::one() + w * w * w)
+    }
 }
 
 impl<T: Real> Forces<T> {
@@ -204,8 +226,8 @@ impl<T: Real> Forces<T> {
     /// drag acceleration is `−(A·C_D·V)·v_r`, the lift acceleration `(A·C_L·V)·(ω̂ × v_r)`.
     /// One dispatch on the family per evaluation.
     ///
-    /// The drag crisis is computed from `V²`, not `V`: `(Re/Re_c)⁶ = (V²·k²)³`, so its
-    /// division runs beside the square root instead of after it (−13 % of a host shot).
+    /// The only division, `S/S_sat` through `s/V²`, runs beside the square root rather than
+    /// after it (its latency is then hidden on the host).
     #[inline(always)]
     pub(crate) fn factors(&self, speed: T, speed_sq: T, spin: T, drag: bool, lift: bool) -> (T, T) {
         let zero = T::zero();
@@ -229,28 +251,49 @@ impl<T: Real> Forces<T> {
             ),
             Self::Modern {
                 drag_v,
-                drag_crisis,
-                crisis_per_speed_sq,
-                drag_s,
-                lift_max,
-                radius,
-                lift_half,
+                crisis,
+                drag_lift,
+                lift_v,
+                saturation_per_spin,
             } => {
+                // Both laws as `P + Q·V` with P, Q from V² and s alone, so the square root
+                // is the last input the force waits for: one multiply–add after it, as for
+                // the linear family (host shot −7 %).
+                // At V = 0, u² = k²/0 is ∞ or NaN: the saturated branch, `V·1 = 0`.
+                let (sat_0, sat_1) = if drag || lift {
+                    saturation_times_speed(saturation_per_spin * spin, speed_sq)
+                } else {
+                    (zero, zero)
+                };
                 let kd = if drag {
-                    let crisis = ModernAero::crisis_of_square(speed_sq * crisis_per_speed_sq);
-                    (drag_v + drag_crisis * crisis) * speed + drag_s * spin
+                    drag_lift * sat_0 + (drag_v + crisis.at(speed_sq) + drag_lift * sat_1) * speed
                 } else {
                     zero
                 };
-                // C_L·V = c_l,max·S·V/(S + S_½) with S = R·s/V, multiplied through by V.
-                let denominator = radius * spin + lift_half * speed;
-                let kl = if lift && denominator > zero {
-                    lift_max * spin * speed / denominator
+                let kl = if lift {
+                    lift_v * sat_0 + lift_v * sat_1 * speed
                 } else {
                     zero
                 };
                 (kd, kl)
             }
         }
+    }
+}
+
+/// `saturation(S/S_sat)·V = P + Q·V` ([`ModernAero::saturation`]) from `k = (R/S_sat)·s`
+/// and `q = V²`, without `V`: with `u = S/S_sat = k/V` and `u² = k²/q`,
+/// `(1 − (1 − u)⁴)·V = 4u·V − 6u²·V + 4u³·V − u⁴·V = 4k·(1 + u²) − (6 + u²)·u²·V` below
+/// saturation (`u² < 1`), and `V` above it. One division, by `q`, beside the square root.
+#[inline(always)]
+fn saturation_times_speed<T: Real>(k: T, speed_sq: T) -> (T, T) {
+    let u_sq = k * k / speed_sq;
+    if u_sq < T::one() {
+        (
+            lit::<T>(4.0) * k * (T::one() + u_sq),
+            -(lit::<T>(6.0) + u_sq) * u_sq,
+        )
+    } else {
+        (T::zero(), T::one())
     }
 }

@@ -36,7 +36,7 @@ pub enum AeroFamily {
     /// cm_spin`).
     Quintavalla,
     /// The modern family: all seven coefficients (`cd_supercritical, cd_subcritical,
-    /// reynolds_critical, cd_spin, cl_max, cl_half_spin, cm_spin`).
+    /// reynolds_critical, cl_max, cl_saturation_spin, cd_lift, cm_spin`).
     Modern,
 }
 
@@ -70,34 +70,36 @@ impl AeroFamily {
     }
 
     /// Physical bounds. Modern: a drag crisis where Bearman & Harvey measured it
-    /// (`c_d,sub` 0.3–0.6, `Re_c` 2·10⁴–2·10⁵), `C_L < 0.5` over `S ∈ [0, 0.6]`, and a
-    /// driver's spin decay (70 m/s) within 1.3–7.9 %/s (Smits & Smith: ~6 %/s); `C_D < 0.6`
-    /// is checked on the fitted model (docs/aero.md). Linear: wide boxes around
-    /// Quintavalla's values.
+    /// (`c_d,sub` 0.3–0.47: at most their ≈ 0.45–0.5, and low enough that the highest spin
+    /// at Re = 4·10⁴ stays below C_D = 0.6; `Re_c` 2·10⁴–2·10⁵), `c_d,super` 0.1–0.35, a lift that
+    /// saturates at `c_l,max` 0.05–0.5 (`C_L < 0.5`) for `S_sat` 0.05–1.5, a spin drag of
+    /// at most the lift (`k_L` 0–1), and a driver's spin decay (70 m/s) within 1.3–7.9 %/s at 1.225 kg/m³
+    /// (Smits & Smith: ~6 %/s); `C_D < 0.6` is checked on the fitted model (docs/aero.md).
+    /// Linear: wide boxes around Quintavalla's values.
     #[must_use]
     pub fn bounds(self) -> Vec<(f64, f64)> {
         match self {
             Self::Quintavalla => vec![(0.05, 0.5), (0.0, 2.0), (0.0, 0.5), (0.0, 2.0), (0.0, 0.05)],
             Self::Modern => vec![
                 (0.1, 0.35),
-                (0.3, 0.6),
+                (0.3, 0.46),
                 (2e4, 2e5),
-                (0.0, 0.3),
                 (0.05, 0.5),
-                (0.02, 1.0),
-                (0.002, 0.012),
+                (0.05, 1.5),
+                (0.0, 1.0),
+                (0.002, 0.0119),
             ],
         }
     }
 
     /// The default starting point: the seed model, or published values for the modern
-    /// family (Bearman & Harvey's crisis, Nathan's drag slope 0.2087, Smits & Smith's
-    /// decay).
+    /// family (Bearman & Harvey's crisis, a lift saturating near S = 0.3 at 0.3, Nathan's
+    /// drag rise with spin as about 0.2087·S ≈ 0.5·C_L, Smits & Smith's decay).
     #[must_use]
     pub fn initial(self) -> Vec<f64> {
         match self {
             Self::Quintavalla => LinearAero::<f64>::quintavalla().to_array().to_vec(),
-            Self::Modern => vec![0.2, 0.45, 5e4, 0.2087, 0.3, 0.2, 0.0094],
+            Self::Modern => vec![0.2, 0.42, 6e4, 0.3, 0.4, 0.5, 0.0094],
         }
     }
 
