@@ -492,17 +492,17 @@ struct Hops<'s, T: Real> {
 }
 
 impl<T: Real> Hopper<T> for Hops<'_, T> {
-    fn forces(&self, at: &Contact<T>, stats: &mut Stats) -> (Vector3<T>, T) {
-        let spin = at.spin.norm();
-        let axis = if spin > T::zero() {
-            at.spin / spin
-        } else {
-            Vector3::zeros()
-        };
-        let (p, v) = (at.position, at.velocity);
+    fn forces(
+        &self,
+        p: &Vector3<T>,
+        v: &Vector3<T>,
+        spin: T,
+        axis: &Vector3<T>,
+        stats: &mut Stats,
+    ) -> (Vector3<T>, T) {
         let f = Dynamics {
             scene: self.scene,
-            axis,
+            axis: *axis,
         }
         .eval(&[p.x, p.y, p.z, v.x, v.y, v.z, spin]);
         stats.force_evaluations = stats.force_evaluations.saturating_add(1);

@@ -119,7 +119,7 @@ pub(crate) fn rebound<T: Real>(
     // Faded out below the reference normal speed (see the module docs).
     let fade = smaller(vn / lit::<T>(CRATER_REFERENCE_NORMAL_SPEED_MPS), T::one());
     let tilt = larger(smaller(tilt * fade, phi), T::zero());
-    let (s, c) = crate::geometry::sin_cos(tilt);
+    let (s, c) = crate::geometry::sin_cos_small(tilt);
     let u = vt * c - vn * s;
     let vn = larger(vt * s + vn * c, T::zero());
     let e = restitution(vn, turf.restitution);

@@ -192,8 +192,16 @@ pub(crate) trait Hopper<T: Real> {
     ) -> Result<Contact<T>>;
 
     /// The acceleration (m/s², G, gravity included) and the rate of change of the spin
-    /// magnitude (rad/s²) at a contact: one force evaluation.
-    fn forces(&self, at: &Contact<T>, stats: &mut Stats) -> (Vector3<T>, T);
+    /// magnitude (rad/s²) of a ball at `position` with `velocity`, spinning at `spin`
+    /// (rad/s) about the unit `axis` (zero without spin): one force evaluation.
+    fn forces(
+        &self,
+        position: &Vector3<T>,
+        velocity: &Vector3<T>,
+        spin: T,
+        axis: &Vector3<T>,
+        stats: &mut Stats,
+    ) -> (Vector3<T>, T);
 }
 
 /// A low hop in closed form with the scene's forces at its ends: the acceleration and the
@@ -213,7 +221,15 @@ fn low_hop<T: Real, H: Hopper<T>>(
     stats: &mut Stats,
     recorder: Option<&mut Recorder<'_, T>>,
 ) -> Option<Contact<T>> {
-    let (a0, s0) = hopper.forces(from, stats);
+    // The spin axis is fixed in flight: its magnitude and direction once (each `norm` is a
+    // software square root on a Cortex-M4F).
+    let spin0 = from.spin.norm();
+    let axis = if spin0 > T::zero() {
+        from.spin / spin0
+    } else {
+        Vector3::zeros()
+    };
+    let (a0, s0) = hopper.forces(&from.position, &from.velocity, spin0, &axis, stats);
     let vn = from.velocity.dot(n);
     let two = lit::<T>(2.0);
     // First guess: the parabola of the initial force.
@@ -224,7 +240,6 @@ fn low_hop<T: Real, H: Hopper<T>>(
     let t1 = -two * vn / an;
     let half = lit::<T>(0.5);
     let sixth = lit::<T>(1.0 / 6.0);
-    let spin0 = from.spin.norm();
     let spin_at = |tau: T, rate0: T, jerk: T| {
         if spin0 > T::zero() {
             let s = larger(spin0 + rate0 * tau + jerk * tau * tau * half, T::zero());
@@ -244,13 +259,8 @@ fn low_hop<T: Real, H: Hopper<T>>(
     };
     let zero = Vector3::zeros();
     let (p1, v1) = state(t1, &zero);
-    let predicted = Contact {
-        time: from.time + t1,
-        position: p1,
-        velocity: v1,
-        spin: spin_at(t1, s0, T::zero()),
-    };
-    let (a1, s1) = hopper.forces(&predicted, stats);
+    let spin1 = larger(spin0 + s0 * t1, T::zero());
+    let (a1, s1) = hopper.forces(&p1, &v1, spin1, &axis, stats);
     let (j, spin_jerk) = ((a1 - a0) / t1, (s1 - s0) / t1);
     // n̂·(p − p₀)/τ = vn + an τ/2 + jn τ²/6 = 0, Newton from τ₁.
     let jn = j.dot(n);
@@ -364,7 +374,9 @@ pub(crate) fn run_out<T: Real, H: Hopper<T>>(
     let along = rest - first.position;
     let forward = Vector3::new(first.velocity.x, T::zero(), first.velocity.z);
     let roll = along.norm();
-    let total = (rest.x - launch_position.x).hypot(rest.z - launch_position.z);
+    // (No `hypot`: the distances are metres, far from overflow; libm's is out of line.)
+    let (dx, dz) = (rest.x - launch_position.x, rest.z - launch_position.z);
+    let total = (dx * dx + dz * dz).sqrt();
     Ok(Rollout {
         total_m: total,
         roll_m: if along.dot(&forward) < T::zero() {
