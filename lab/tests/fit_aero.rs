@@ -111,7 +111,7 @@ fn the_calibrated_default_is_the_fit_of_the_tour_data() {
 }
 
 /// Issue 10's cross-validation target: the modern family refitted without each row predicts
-/// that row's carry within 2 % on average (docs/aero.md: 1.70 %).
+/// that row's carry within 2 % on average (measured 1.52 %; docs/aero.md).
 #[test]
 fn leave_one_out_carry_of_the_modern_family() {
     let Some(rows) = common::tour_2023() else {

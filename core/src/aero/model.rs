@@ -191,8 +191,8 @@ pub(crate) enum Forces<T> {
     },
 }
 
-/// The drag crisis factor `Δ·crisis = Δ/(1 + w³)` ([`ModernAero::crisis`]) from `q = V²`
-/// alone, `w = (Re/Re_c)² = q·k²`: its division runs beside the square root.
+/// The drag crisis factor `Δ·crisis = Δ/(1 + w³)` ([`ModernAero::crisis`] with
+/// `w = (Re/Re_c)² = q·k²`) from `q = V²` alone: its division runs beside the square root.
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub(crate) struct Crisis<T> {
@@ -224,10 +224,10 @@ impl<T: Real> Forces<T> {
     /// `(A·C_D·V, A·C_L·V)` (1/s) at air speed `speed = V` (its square `speed_sq`, from
     /// which `V` was taken) and spin `spin`, each only when asked for (`0` otherwise): the
     /// drag acceleration is `−(A·C_D·V)·v_r`, the lift acceleration `(A·C_L·V)·(ω̂ × v_r)`.
-    /// One dispatch on the family per evaluation.
+    /// One dispatch on the family per evaluation; called only when drag or lift is on.
     ///
-    /// The only division, `S/S_sat` through `s/V²`, runs beside the square root rather than
-    /// after it (its latency is then hidden on the host).
+    /// The modern family's two divisions (the lift's `s²/V²` and the crisis) need only `V²`,
+    /// so they run beside the square root rather than after it.
     #[inline(always)]
     pub(crate) fn factors(&self, speed: T, speed_sq: T, spin: T, drag: bool, lift: bool) -> (T, T) {
         let zero = T::zero();
@@ -258,13 +258,9 @@ impl<T: Real> Forces<T> {
             } => {
                 // Both laws as `P + Q·V` with P, Q from V² and s alone, so the square root
                 // is the last input the force waits for: one multiply–add after it, as for
-                // the linear family (host shot −7 %).
-                // At V = 0, u² = k²/0 is ∞ or NaN: the saturated branch, `V·1 = 0`.
-                let (sat_0, sat_1) = if drag || lift {
-                    saturation_times_speed(saturation_per_spin * spin, speed_sq)
-                } else {
-                    (zero, zero)
-                };
+                // the linear family. At V = 0, u² = k²/0 is ∞ or NaN: the saturated
+                // branch, `V·1 = 0`.
+                let (sat_0, sat_1) = saturation_times_speed(saturation_per_spin * spin, speed_sq);
                 let kd = if drag {
                     drag_lift * sat_0 + (drag_v + crisis.at(speed_sq) + drag_lift * sat_1) * speed
                 } else {

@@ -149,13 +149,8 @@ impl<T: Real> ModernAero<T> {
     /// crisis, ½ at `Re_c`, 0 far above.
     #[must_use]
     pub fn crisis(ratio: T) -> T {
-        Self::crisis_of_square(ratio * ratio)
-    }
-
-    /// The same weight from the squared ratio `w = (Re/Re_c)²`: `1/(1 + w³)`.
-    #[must_use]
-    pub fn crisis_of_square(ratio_sq: T) -> T {
-        T::one() / (T::one() + ratio_sq * ratio_sq * ratio_sq)
+        let w = ratio * ratio;
+        T::one() / (T::one() + w * w * w)
     }
 
     /// The lift's saturation `1 − (1 − u)⁴` at `u = min(x, 1)`, with `x = S/S_sat ≥ 0`:

@@ -240,13 +240,9 @@ fn low_hop<T: Real, H: Hopper<T>>(
     let t1 = -two * vn / an;
     let half = lit::<T>(0.5);
     let sixth = lit::<T>(1.0 / 6.0);
+    // The spin magnitude, its rate linear in time between the ends (never below zero).
     let spin_at = |tau: T, rate0: T, jerk: T| {
-        if spin0 > T::zero() {
-            let s = larger(spin0 + rate0 * tau + jerk * tau * tau * half, T::zero());
-            from.spin * (s / spin0)
-        } else {
-            from.spin
-        }
+        larger(spin0 + rate0 * tau + jerk * tau * tau * half, T::zero())
     };
     let state = |tau: T, j: &Vector3<T>| {
         (
@@ -259,8 +255,7 @@ fn low_hop<T: Real, H: Hopper<T>>(
     };
     let zero = Vector3::zeros();
     let (p1, v1) = state(t1, &zero);
-    let spin1 = larger(spin0 + s0 * t1, T::zero());
-    let (a1, s1) = hopper.forces(&p1, &v1, spin1, &axis, stats);
+    let (a1, s1) = hopper.forces(&p1, &v1, spin_at(t1, s0, T::zero()), &axis, stats);
     let (j, spin_jerk) = ((a1 - a0) / t1, (s1 - s0) / t1);
     // n̂·(p − p₀)/τ = vn + an τ/2 + jn τ²/6 = 0, Newton from τ₁.
     let jn = j.dot(n);
@@ -295,7 +290,7 @@ fn low_hop<T: Real, H: Hopper<T>>(
                 time_s: from.time + t,
                 position_m: p,
                 velocity_mps: v,
-                spin_radps: spin_at(t, s0, spin_jerk),
+                spin_radps: axis * spin_at(t, s0, spin_jerk),
             });
         }
     }
@@ -304,7 +299,7 @@ fn low_hop<T: Real, H: Hopper<T>>(
         time: from.time + tau,
         position,
         velocity,
-        spin: spin_at(tau, s0, spin_jerk),
+        spin: axis * spin_at(tau, s0, spin_jerk),
     })
 }
 

@@ -70,12 +70,12 @@ impl AeroFamily {
     }
 
     /// Physical bounds. Modern: a drag crisis where Bearman & Harvey measured it
-    /// (`c_d,sub` 0.3–0.47: at most their ≈ 0.45–0.5, and low enough that the highest spin
-    /// at Re = 4·10⁴ stays below C_D = 0.6; `Re_c` 2·10⁴–2·10⁵), `c_d,super` 0.1–0.35, a lift that
-    /// saturates at `c_l,max` 0.05–0.5 (`C_L < 0.5`) for `S_sat` 0.05–1.5, a spin drag of
-    /// at most the lift (`k_L` 0–1), and a driver's spin decay (70 m/s) within 1.3–7.9 %/s at 1.225 kg/m³
-    /// (Smits & Smith: ~6 %/s); `C_D < 0.6` is checked on the fitted model (docs/aero.md).
-    /// Linear: wide boxes around Quintavalla's values.
+    /// (`c_d,sub` 0.3–0.46: within their ≈ 0.45–0.5, and low enough that the highest spin
+    /// at Re = 4·10⁴ stays below C_D = 0.6; `Re_c` 2·10⁴–2·10⁵), `c_d,super` 0.1–0.35, a
+    /// lift that saturates at `c_l,max` 0.05–0.5 (`C_L < 0.5`) for `S_sat` 0.05–1.5, a spin
+    /// drag of at most the lift (`k_L` 0–1), and a driver's spin decay (70 m/s, 1.225
+    /// kg/m³) within 1.3–7.9 %/s (Smits & Smith: ~6 %/s); `C_D < 0.6` is checked on the
+    /// fitted model (docs/aero.md). Linear: wide boxes around Quintavalla's values.
     #[must_use]
     pub fn bounds(self) -> Vec<(f64, f64)> {
         match self {
