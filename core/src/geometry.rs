@@ -64,10 +64,46 @@ pub fn sin_cos_small<T: Real>(x: T) -> (T, T) {
         0.041666666666666595,
     ];
     let z = x * x;
-    let horner = |c: &[f64; 6]| c.iter().fold(T::zero(), |acc, &k| acc * z + lit(k));
-    let sin = x + x * z * horner(&SIN);
-    let cos = T::one() - lit::<T>(0.5) * z + z * z * horner(&COS);
+    let sin = x + x * z * estrin6(&SIN, z);
+    let cos = T::one() - lit::<T>(0.5) * z + z * z * estrin6(&COS, z);
     (sin, cos)
+}
+
+/// `c₀z⁵ + c₁z⁴ + … + c₅` (coefficients highest power first) by Estrin's scheme: three
+/// independent pairs, then `z²` and `z⁴` combine them, so the dependency chain is three
+/// multiply–adds deep instead of Horner's six (the bounce waits on it).
+#[inline(always)]
+fn estrin6<T: Real>(c: &[f64; 6], z: T) -> T {
+    let pair = |hi: f64, lo: f64| lit::<T>(hi) * z + lit(lo);
+    let z2 = z * z;
+    let (p01, p23, p45) = (pair(c[0], c[1]), pair(c[2], c[3]), pair(c[4], c[5]));
+    (p01 * z2 + p23) * z2 + p45
+}
+
+/// Abramowitz & Stegun (1964), *Handbook of Mathematical Functions*, 4.4.49: the
+/// coefficients `a₁, a₃, …, a₁₅` of `atan z ≈ z·(a₁ + a₃z² + … + a₁₅z¹⁴)` on `0 ≤ z ≤ 1`.
+const ATAN_A: [f64; 8] = [
+    0.999_999_332_9,
+    -0.333_298_560_5,
+    0.199_465_359_9,
+    -0.139_085_335_1,
+    0.096_420_044_1,
+    -0.055_909_886_1,
+    0.021_861_228_8,
+    -0.004_054_058_0,
+];
+
+/// `atan z` from `z` and `z²` (`0 ≤ z ≤ 1`), reflected to `π/2 − atan z` when `steep`: the
+/// degree-7 polynomial in `z²` by Estrin's scheme (four independent pairs, then `z⁴` and
+/// `z⁸`), four multiply–adds deep instead of Horner's seven.
+#[inline(always)]
+fn atan_unit<T: Real>(z: T, z2: T, steep: bool) -> T {
+    let z4 = z2 * z2;
+    let pair = |i: usize| lit::<T>(ATAN_A[i + 1]) * z2 + lit(ATAN_A[i]);
+    let low = pair(2) * z4 + pair(0);
+    let high = pair(6) * z4 + pair(4);
+    let angle = (high * (z4 * z4) + low) * z;
+    if steep { T::frac_pi_2() - angle } else { angle }
 }
 
 /// `atan2(y, x)` for `y, x ≥ 0` (the first quadrant, `0..=π/2`), by the polynomial of
@@ -84,16 +120,6 @@ pub fn sin_cos_small<T: Real>(x: T) -> (T, T) {
 #[inline]
 #[must_use]
 pub fn atan2_first_quadrant<T: Real>(y: T, x: T) -> T {
-    const A: [f64; 8] = [
-        0.999_999_332_9,
-        -0.333_298_560_5,
-        0.199_465_359_9,
-        -0.139_085_335_1,
-        0.096_420_044_1,
-        -0.055_909_886_1,
-        0.021_861_228_8,
-        -0.004_054_058_0,
-    ];
     let steep = y > x;
     let (num, den) = if steep { (x, y) } else { (y, x) };
     if !(den > T::zero()) {
@@ -104,13 +130,7 @@ pub fn atan2_first_quadrant<T: Real>(y: T, x: T) -> T {
         };
     }
     let z = num / den;
-    let z2 = z * z;
-    let mut p = lit::<T>(A[7]);
-    for a in A[..7].iter().rev() {
-        p = p * z2 + lit(*a);
-    }
-    let angle = p * z;
-    if steep { T::frac_pi_2() - angle } else { angle }
+    atan_unit(z, z * z, steep)
 }
 
 /// `Rx(θ)`: turns +Y towards +Z.

@@ -199,14 +199,19 @@ pub(crate) fn dormand_prince<T: Real, R: Rhs<T>>(
         let k5 = rhs.eval(&combine(&y, h, A5, [&k1, &k2, &k3, &k4]));
         let k6 = rhs.eval(&combine(&y, h, A6, [&k1, &k2, &k3, &k4, &k5]));
         let y1 = combine(&y, h, B, [&k1, &k3, &k4, &k5, &k6]);
+        // The error test's weights 1/(atol + rtol·max(|y₀ᵢ|, |y₁ᵢ|)) need only y₀ and y₁:
+        // their divisions run beside the last evaluation instead of after it.
+        let mut weight = y1;
+        for (w, a) in weight.iter_mut().zip(y.iter()) {
+            *w = T::one() / (cfg.atol + cfg.rtol * larger(a.abs(), w.abs()));
+        }
         let k7 = rhs.eval(&y1);
         stats.force_evaluations = stats.force_evaluations.saturating_add(6);
         // Scaled max-norm of the embedded error estimate e = h Σ (bᵢ − b̂ᵢ) kᵢ.
         let e = combine(&[T::zero(); 7], h, E, [&k1, &k3, &k4, &k5, &k6, &k7]);
         let mut err = T::zero();
-        for ((ei, a), b) in e.iter().zip(y.iter()).zip(y1.iter()) {
-            let scale = cfg.atol + cfg.rtol * larger(a.abs(), b.abs());
-            let r = ei.abs() / scale;
+        for (ei, w) in e.iter().zip(weight.iter()) {
+            let r = ei.abs() * *w;
             // `!(r <= err)` also propagates NaN into a rejection.
             if !(r <= err) {
                 err = r;

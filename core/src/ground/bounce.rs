@@ -72,12 +72,17 @@ pub fn restitution<T: Real>(normal_speed_mps: T, e0: T) -> T {
     e0 / lit::<T>(PENNER_RESTITUTION_0) * penner
 }
 
-/// A unit vector in the plane of `n` (unit): the tangential direction of motion when there
-/// is one, else the direction a spin in the plane would kick the ball, else downrange.
-fn tangent_direction<T: Real>(vt: &Vector3<T>, spin: &Vector3<T>, n: &Vector3<T>) -> Vector3<T> {
-    let u = vt.norm();
-    if u > T::zero() {
-        return vt / u;
+/// A unit vector in the plane of `n` (unit): the tangential direction of motion `vt` (of
+/// length `len`) when there is one, else the direction a spin in the plane would kick the
+/// ball, else downrange.
+fn tangent_direction<T: Real>(
+    vt: &Vector3<T>,
+    len: T,
+    spin: &Vector3<T>,
+    n: &Vector3<T>,
+) -> Vector3<T> {
+    if len > T::zero() {
+        return vt / len;
     }
     let in_plane = spin - n * spin.dot(n);
     let s = in_plane.norm();
@@ -96,6 +101,11 @@ fn tangent_direction<T: Real>(vt: &Vector3<T>, spin: &Vector3<T>, n: &Vector3<T>
 
 /// One bounce of a ball of radius `radius_m` arriving with `velocity` and `spin` on a
 /// plane of unit normal `n`, per the module docs. Finite inputs give finite outputs.
+///
+/// Written for a short dependency chain (each bounce waits on the last): the tangential
+/// speed is the length of the tangential velocity (not a dot product after normalising),
+/// the impact speed's square root runs beside it, and the crater law's constant factors
+/// are one product.
 pub(crate) fn rebound<T: Real>(
     velocity: &Vector3<T>,
     spin: &Vector3<T>,
@@ -104,21 +114,25 @@ pub(crate) fn rebound<T: Real>(
     radius_m: T,
 ) -> Rebound<T> {
     let vn = larger(-velocity.dot(n), T::zero());
-    let vt = velocity + n * vn;
-    let t = tangent_direction(&vt, spin, n);
-    let b = t.cross(n);
-    let vt = larger(vt.dot(&t), T::zero());
-    let w = spin.dot(&b);
+    let vt_vec = velocity + n * vn;
+    let vt_sq = vt_vec.norm_squared();
+    let vt = vt_sq.sqrt();
     // (No `hypot`: libm's single-precision one works in f64, software on a Cortex-M4F.)
-    let speed = (vt * vt + vn * vn).sqrt();
+    let speed = (vt_sq + vn * vn).sqrt();
+    let t = tangent_direction(&vt_vec, vt, spin, n);
+    let b = t.cross(n);
+    let w = spin.dot(&b);
     let phi = crate::geometry::atan2_first_quadrant(vt, vn);
-    let tilt = turf.crater_scale
-        * lit::<T>(CRATER_REFERENCE_RAD)
-        * (speed / lit::<T>(CRATER_REFERENCE_SPEED_MPS))
-        * (phi / lit::<T>(CRATER_REFERENCE_ANGLE_RAD));
+    // θ_c = κ·15.4°·(v/18.6)·(φ/44.4°)·min(1, v_n/13.29): everything but φ first.
+    let per_speed_angle =
+        lit::<T>(CRATER_REFERENCE_RAD / (CRATER_REFERENCE_SPEED_MPS * CRATER_REFERENCE_ANGLE_RAD));
     // Faded out below the reference normal speed (see the module docs).
-    let fade = smaller(vn / lit::<T>(CRATER_REFERENCE_NORMAL_SPEED_MPS), T::one());
-    let tilt = larger(smaller(tilt * fade, phi), T::zero());
+    let fade = smaller(
+        vn * lit::<T>(1.0 / CRATER_REFERENCE_NORMAL_SPEED_MPS),
+        T::one(),
+    );
+    let tilt = turf.crater_scale * per_speed_angle * speed * fade * phi;
+    let tilt = larger(smaller(tilt, phi), T::zero());
     let (s, c) = crate::geometry::sin_cos_small(tilt);
     let u = vt * c - vn * s;
     let vn = larger(vt * s + vn * c, T::zero());
@@ -127,16 +141,20 @@ pub(crate) fn rebound<T: Real>(
     let slip = u + r * w;
     let impulse = turf.friction * (T::one() + e) * vn;
     let rolled = lit::<T>(3.5) * impulse >= slip.abs();
+    let per_radius = T::one() / r;
     let (u1, w1) = if rolled {
-        let u1 = (lit::<T>(5.0) * u - lit::<T>(2.0) * r * w) / lit(7.0);
-        (u1, -u1 / r)
+        let u1 = lit::<T>(5.0 / 7.0) * u - lit::<T>(2.0 / 7.0) * r * w;
+        (u1, -u1 * per_radius)
     } else {
         let sign = if slip > T::zero() {
             T::one()
         } else {
             -T::one()
         };
-        (u - sign * impulse, w - sign * lit::<T>(2.5) * impulse / r)
+        (
+            u - sign * impulse,
+            w - sign * lit::<T>(2.5) * impulse * per_radius,
+        )
     };
     let v1 = e * vn;
     let t1 = t * c + n * s;

@@ -212,8 +212,8 @@ pub(crate) trait Hopper<T: Real> {
 /// p(τ) = p₀ + v₀τ + a₀τ²/2 + jτ³/6,   v(τ) = v₀ + a₀τ + jτ²/2,   j = (a₁ − a₀)/τ₁
 /// ```
 ///
-/// landing where `n̂·(p − p₀) = 0` (two Newton steps from `τ₁`). `None` when the force does
-/// not pull the ball back to the plane.
+/// landing where `n̂·(p − p₀) = 0`, a quadratic in `τ` (solved exactly). `None` when the
+/// force does not pull the ball back to the plane.
 fn low_hop<T: Real, H: Hopper<T>>(
     from: &Contact<T>,
     n: &Vector3<T>,
@@ -237,7 +237,9 @@ fn low_hop<T: Real, H: Hopper<T>>(
     if !(an < T::zero()) {
         return None;
     }
+    // τ₁ and 1/τ₁ side by side (two divisions, neither waiting on the other).
     let t1 = -two * vn / an;
+    let per_t1 = -an / (two * vn);
     let half = lit::<T>(0.5);
     let sixth = lit::<T>(1.0 / 6.0);
     // The spin magnitude, its rate linear in time between the ends (never below zero).
@@ -256,17 +258,17 @@ fn low_hop<T: Real, H: Hopper<T>>(
     let zero = Vector3::zeros();
     let (p1, v1) = state(t1, &zero);
     let (a1, s1) = hopper.forces(&p1, &v1, spin_at(t1, s0, T::zero()), &axis, stats);
-    let (j, spin_jerk) = ((a1 - a0) / t1, (s1 - s0) / t1);
-    // n̂·(p − p₀)/τ = vn + an τ/2 + jn τ²/6 = 0, Newton from τ₁.
-    let jn = j.dot(n);
-    let mut tau = t1;
-    for _ in 0..2 {
-        let q = vn + an * tau * half + jn * tau * tau * sixth;
-        let dq = an * half + jn * tau * lit(1.0 / 3.0);
-        if dq < T::zero() {
-            tau -= q / dq;
-        }
+    let (j, spin_jerk) = ((a1 - a0) * per_t1, (s1 - s0) * per_t1);
+    // n̂·(p − p₀)/τ = vn + an τ/2 + jn τ²/6 = 0: the quadratic's root that continues the
+    // parabola's (stable form 2c/(−b + √(b² − 4ac)), a = jn/6, b = an/2 < 0, c = vn > 0).
+    // jn = j·n from the normal accelerations (one dot product after a₁, not two steps).
+    let jn = (a1.dot(n) - an) * per_t1;
+    let b = an * half;
+    let disc = b * b - jn * (lit::<T>(2.0 / 3.0) * vn);
+    if !(disc >= T::zero()) {
+        return None;
     }
+    let tau = two * vn / (disc.sqrt() - b);
     if !(tau > T::zero() && tau.is_finite()) {
         return None;
     }
