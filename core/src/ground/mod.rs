@@ -214,7 +214,7 @@ pub(crate) trait Hopper<T: Real> {
 ///
 /// landing where `n̂·(p − p₀) = 0`, a quadratic in `τ` (solved exactly). `None` when the
 /// force does not pull the ball back to the plane.
-fn low_hop<T: Real, H: Hopper<T>>(
+pub(crate) fn low_hop<T: Real, H: Hopper<T>>(
     from: &Contact<T>,
     n: &Vector3<T>,
     hopper: &H,
