@@ -202,6 +202,9 @@ pub(crate) trait Hopper<T: Real> {
         axis: &Vector3<T>,
         stats: &mut Stats,
     ) -> (Vector3<T>, T);
+
+    /// Whether the forces see a wind that changes with height (a profile).
+    fn wind_varies(&self) -> bool;
 }
 
 /// A low hop in closed form with the scene's forces at its ends: the acceleration and the
@@ -212,12 +215,15 @@ pub(crate) trait Hopper<T: Real> {
 /// p(τ) = p₀ + v₀τ + a₀τ²/2 + jτ³/6,   v(τ) = v₀ + a₀τ + jτ²/2,   j = (a₁ − a₀)/τ₁
 /// ```
 ///
-/// landing where `n̂·(p − p₀) = 0`, a quadratic in `τ` (solved exactly). `None` when the
-/// force does not pull the ball back to the plane.
+/// landing where `n̂·(p − p₀) = 0`, a quadratic in `τ` (solved exactly). In a wind profile
+/// (zero wind at the ground, where both ends are) a third evaluation in the middle of the
+/// hop makes the acceleration quadratic in time. `None` when the force does not pull the
+/// ball back to the plane.
 pub(crate) fn low_hop<T: Real, H: Hopper<T>>(
     from: &Contact<T>,
     n: &Vector3<T>,
     hopper: &H,
+    wind_varies: bool,
     stats: &mut Stats,
     recorder: Option<&mut Recorder<'_, T>>,
 ) -> Option<Contact<T>> {
@@ -255,6 +261,20 @@ pub(crate) fn low_hop<T: Real, H: Hopper<T>>(
             from.velocity + a0 * tau + j * (half * tau * tau),
         )
     };
+    // With `a(τ) = a₀ + jτ + qτ²` (q only in a wind profile, see below).
+    let state_q = |tau: T, j: &Vector3<T>, q: Option<&Vector3<T>>| {
+        let (p, v) = state(tau, j);
+        match q {
+            Some(q) => {
+                let tau2 = tau * tau;
+                (
+                    p + q * (lit::<T>(1.0 / 12.0) * tau2 * tau2),
+                    v + q * (lit::<T>(1.0 / 3.0) * tau2 * tau),
+                )
+            }
+            None => (p, v),
+        }
+    };
     let zero = Vector3::zeros();
     let (p1, v1) = state(t1, &zero);
     let (a1, s1) = hopper.forces(&p1, &v1, spin_at(t1, s0, T::zero()), &axis, stats);
@@ -272,6 +292,32 @@ pub(crate) fn low_hop<T: Real, H: Hopper<T>>(
     if !(tau > T::zero() && tau.is_finite()) {
         return None;
     }
+    // In a wind profile both ends are on the ground, where its wind is zero: a third
+    // evaluation in the middle of the hop, and the acceleration quadratic in time through
+    // the three, `j = (4a_m − 3a₀ − a₁)/τ₁`, `q = 2(a₀ + a₁ − 2a_m)/τ₁²`; the landing by
+    // Newton's method from the two-end root on `vn + a_nτ/2 + j_nτ²/6 + q_nτ³/12 = 0`.
+    let (j, q, tau) = if wind_varies {
+        let tm = t1 * half;
+        let (pm, vm) = state(tm, &j);
+        let (am, _) = hopper.forces(&pm, &vm, spin_at(tm, s0, spin_jerk), &axis, stats);
+        let j = (am * lit::<T>(4.0) - a0 * lit::<T>(3.0) - a1) * per_t1;
+        let q = (a0 + a1 - am * two) * (two * per_t1 * per_t1);
+        let (jn, qn) = (j.dot(n), q.dot(n));
+        let mut tau = tau;
+        for _ in 0..3 {
+            let g = vn + tau * (an * half + tau * (jn * sixth + tau * qn * lit(1.0 / 12.0)));
+            let dg = an * half + tau * (jn * lit(1.0 / 3.0) + tau * qn * lit(0.25));
+            if dg < T::zero() {
+                tau -= g / dg;
+            }
+        }
+        if !(tau > T::zero() && tau.is_finite()) {
+            return None;
+        }
+        (j, Some(q), tau)
+    } else {
+        (j, None, tau)
+    };
     if let Some(r) = recorder {
         let dt = r.interval();
         let k = crate::real::to_f64(from.time / dt);
@@ -287,7 +333,7 @@ pub(crate) fn low_hop<T: Real, H: Hopper<T>>(
             if !(t > T::zero() && t < tau) {
                 break;
             }
-            let (p, v) = state(t, &j);
+            let (p, v) = state_q(t, &j, q.as_ref());
             r.push(crate::flight::Sample {
                 time_s: from.time + t,
                 position_m: p,
@@ -296,7 +342,10 @@ pub(crate) fn low_hop<T: Real, H: Hopper<T>>(
             });
         }
     }
-    let (position, velocity) = state(tau, &j);
+    let (position, velocity) = match q {
+        Some(q) => state_q(tau, &j, Some(&q)),
+        None => state(tau, &j),
+    };
     Some(Contact {
         time: from.time + tau,
         position,
@@ -326,6 +375,7 @@ pub(crate) fn run_out<T: Real, H: Hopper<T>>(
     let hop_speed_sq = lit::<T>(2.0 * STOP_HEIGHT_M) * g_n;
     let low_hop_speed_sq = lit::<T>(2.0 * LOW_HOP_HEIGHT_M) * g_n;
     let mut stats = Stats::default();
+    let wind_varies = hopper.wind_varies();
     let mut at = *first;
     let mut bounces = 0_u32;
     let roll_velocity = loop {
@@ -341,7 +391,14 @@ pub(crate) fn run_out<T: Real, H: Hopper<T>>(
             ..at
         };
         let low = if vn * vn < low_hop_speed_sq {
-            low_hop(&from, &n, hopper, &mut stats, recorder.as_deref_mut())
+            low_hop(
+                &from,
+                &n,
+                hopper,
+                wind_varies,
+                &mut stats,
+                recorder.as_deref_mut(),
+            )
         } else {
             None
         };
