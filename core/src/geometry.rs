@@ -93,19 +93,6 @@ const ATAN_A: [f64; 8] = [
     -0.004_054_058_0,
 ];
 
-/// `atan z` from `z` and `z²` (`0 ≤ z ≤ 1`), reflected to `π/2 − atan z` when `steep`: the
-/// degree-7 polynomial in `z²` by Estrin's scheme (four independent pairs, then `z⁴` and
-/// `z⁸`), four multiply–adds deep instead of Horner's seven.
-#[inline(always)]
-fn atan_unit<T: Real>(z: T, z2: T, steep: bool) -> T {
-    let z4 = z2 * z2;
-    let pair = |i: usize| lit::<T>(ATAN_A[i + 1]) * z2 + lit(ATAN_A[i]);
-    let low = pair(2) * z4 + pair(0);
-    let high = pair(6) * z4 + pair(4);
-    let angle = (high * (z4 * z4) + low) * z;
-    if steep { T::frac_pi_2() - angle } else { angle }
-}
-
 /// `atan2(y, x)` for `y, x ≥ 0` (the first quadrant, `0..=π/2`), by the polynomial of
 /// Abramowitz & Stegun (1964), *Handbook of Mathematical Functions*, 4.4.49:
 ///
@@ -130,7 +117,15 @@ pub fn atan2_first_quadrant<T: Real>(y: T, x: T) -> T {
         };
     }
     let z = num / den;
-    atan_unit(z, z * z, steep)
+    // The degree-7 polynomial in z² by Estrin's scheme (four independent pairs, then z⁴
+    // and z⁸): four multiply–adds deep instead of Horner's seven.
+    let z2 = z * z;
+    let z4 = z2 * z2;
+    let pair = |i: usize| lit::<T>(ATAN_A[i + 1]) * z2 + lit(ATAN_A[i]);
+    let low = pair(2) * z4 + pair(0);
+    let high = pair(6) * z4 + pair(4);
+    let angle = (high * (z4 * z4) + low) * z;
+    if steep { T::frac_pi_2() - angle } else { angle }
 }
 
 /// `Rx(θ)`: turns +Y towards +Z.

@@ -214,6 +214,11 @@ impl<T: Real> PreparedScene<T> {
     pub(crate) fn has_wind(&self) -> bool {
         !matches!(self.wind, WindField::None)
     }
+
+    /// Whether the wind changes with height (a profile).
+    pub(crate) fn wind_varies_with_height(&self) -> bool {
+        matches!(self.wind, WindField::Profile { .. })
+    }
 }
 
 /// The per-effect cost ladder: six scenes, each adding one effect to the one before —

@@ -201,9 +201,9 @@ pub(crate) fn dormand_prince<T: Real, R: Rhs<T>>(
         let y1 = combine(&y, h, B, [&k1, &k3, &k4, &k5, &k6]);
         // The error test's weights 1/(atol + rtol·max(|y₀ᵢ|, |y₁ᵢ|)) need only y₀ and y₁:
         // their divisions run beside the last evaluation instead of after it.
-        let mut weight = y1;
-        for (w, a) in weight.iter_mut().zip(y.iter()) {
-            *w = T::one() / (cfg.atol + cfg.rtol * larger(a.abs(), w.abs()));
+        let mut weight = [T::zero(); 7];
+        for ((w, a), b) in weight.iter_mut().zip(y.iter()).zip(y1.iter()) {
+            *w = T::one() / (cfg.atol + cfg.rtol * larger(a.abs(), b.abs()));
         }
         let k7 = rhs.eval(&y1);
         stats.force_evaluations = stats.force_evaluations.saturating_add(6);

@@ -510,9 +510,7 @@ impl<T: Real> Hopper<T> for Hops<'_, T> {
     }
 
     fn wind_varies(&self) -> bool {
-        let e = &self.scene.effects;
-        matches!(self.scene.wind, crate::wind::WindField::Profile { .. })
-            && (e.drag || e.lift || e.spin_decay)
+        self.scene.wind_varies_with_height()
     }
 
     fn hop(

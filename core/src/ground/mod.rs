@@ -342,6 +342,8 @@ pub(crate) fn low_hop<T: Real, H: Hopper<T>>(
             });
         }
     }
+    // (The plain closure when there is no q: the `Option` in the landing's state cost ~25
+    // instructions a shot on the M4F.)
     let (position, velocity) = match q {
         Some(q) => state_q(tau, &j, Some(&q)),
         None => state(tau, &j),
