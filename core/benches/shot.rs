@@ -280,7 +280,33 @@ fn ground<T: Real>(c: &mut Criterion, label: &str) {
     group.finish();
 }
 
+/// The bounce's latency (docs/ground.md "Cost"): a chain of 64 bounces, each fed the last
+/// one's rebound turned back down (a run-out's bounces wait on each other the same way).
+fn bounce_chain(c: &mut Criterion) {
+    use carry_core::ground::{Ground, Surface};
+    use nalgebra::Vector3;
+    let Ok(ground) = Ground::level(Surface::<f64>::FairwayFirm).prepare(0.021_336) else {
+        return;
+    };
+    c.bench_function("shot_ground/bounce_chain_64", |b| {
+        b.iter(|| {
+            let mut v = black_box(Vector3::new(6.2, -0.75, -0.3));
+            let mut w = black_box(Vector3::new(0.0, 0.0, -290.0));
+            for _ in 0..64 {
+                let Ok(r) = ground.bounce(&v, &w) else {
+                    break;
+                };
+                // Back down at the same normal speed, the rebound's tangential velocity.
+                v = Vector3::new(r.velocity_mps.x, -0.75, r.velocity_mps.z);
+                w = r.spin_radps;
+            }
+            (v, w)
+        })
+    });
+}
+
 fn shot_benches(c: &mut Criterion) {
+    bounce_chain(c);
     ground::<f64>(c, "f64");
     ground::<f32>(c, "f32");
     full_shot::<f64>(c, "f64");

@@ -1,11 +1,17 @@
-//! Profiling aid: the default shot with and without a firm fairway, many times.
+//! Profiling aid: the default shot with and without a ground, many times:
+//! `ground_cost {n|g|green|rough} N` (no ground, firm fairway, green, rough).
 use carry_core::ground::{Ground, Surface};
 use carry_core::real::lit;
 use carry_core::shot::{Fidelity, play};
 use carry_core::{Ball, ClubSpec, Delivery, FaceLocation, Scene};
 use std::hint::black_box;
 fn main() {
-    let ground = std::env::args().nth(1).as_deref() == Some("g");
+    let surface = match std::env::args().nth(1).as_deref() {
+        Some("g") => Some(Surface::FairwayFirm),
+        Some("green") => Some(Surface::green()),
+        Some("rough") => Some(Surface::Rough),
+        _ => None,
+    };
     let Ok(club) = ClubSpec::<f64>::driver().validate() else {
         return;
     };
@@ -16,7 +22,7 @@ fn main() {
     };
     let ball = Ball::standard();
     let scene = Scene {
-        ground: ground.then_some(Ground::level(Surface::FairwayFirm)),
+        ground: surface.map(Ground::level),
         ..Scene::default()
     };
     let Ok(scene) = scene.prepare(&ball) else {

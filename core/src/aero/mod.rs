@@ -70,7 +70,78 @@ pub(crate) struct Dynamics<'a, T: Real> {
     pub(crate) axis: Vector3<T>,
 }
 
+/// One force evaluation and what it was made of: `a = g − k_d·v_r + k_l·(ω̂ × v_r)`,
+/// `ds/dt = −λ·V·s`.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct ForceEvaluation<T: Real> {
+    /// Acceleration (m/s², G, gravity included).
+    pub(crate) acceleration: Vector3<T>,
+    /// Rate of change of the spin magnitude (rad/s²).
+    pub(crate) spin_rate: T,
+    /// Air velocity `v_r` (m/s, G).
+    relative_velocity: Vector3<T>,
+    /// Air speed `V` (m/s) and its square.
+    speed: T,
+    speed_sq: T,
+    /// Spin magnitude `s` (rad/s).
+    spin: T,
+    /// Drag and lift factors `k_d`, `k_l` (1/s; 0 when off).
+    drag: T,
+    lift: T,
+    /// Spin decay factor `λ·V` (1/s; 0 without spin decay).
+    decay: T,
+}
+
 impl<T: Real> Dynamics<'_, T> {
+    /// The forces with the effect switches given explicitly (constants fold away).
+    #[inline(always)]
+    fn forces_switched(
+        &self,
+        y: &State<T>,
+        drag: bool,
+        lift: bool,
+        decay: bool,
+        wind: bool,
+    ) -> ForceEvaluation<T> {
+        let p = self.scene;
+        let v = Vector3::new(y[3], y[4], y[5]);
+        let s = y[S];
+        let zero = T::zero();
+        let mut f = ForceEvaluation {
+            acceleration: Vector3::new(zero, -p.gravity, zero),
+            spin_rate: zero,
+            relative_velocity: v,
+            speed: zero,
+            speed_sq: zero,
+            spin: s,
+            drag: zero,
+            lift: zero,
+            decay: zero,
+        };
+        if drag || lift || decay {
+            let vr = if wind { v - p.wind.at(y[Y]) } else { v };
+            let speed_sq = vr.norm_squared();
+            let speed = speed_sq.sqrt();
+            (f.relative_velocity, f.speed, f.speed_sq) = (vr, speed, speed_sq);
+            if drag || lift {
+                let (kd, kl) = p.aero.forces.factors(speed, speed_sq, s, drag, lift);
+                if drag {
+                    f.acceleration -= vr * kd;
+                    f.drag = kd;
+                }
+                if lift {
+                    f.acceleration += self.axis.cross(&vr) * kl;
+                    f.lift = kl;
+                }
+            }
+            if decay {
+                f.decay = p.aero.decay * speed;
+                f.spin_rate = -f.decay * s;
+            }
+        }
+        f
+    }
+
     /// The derivative with the effect switches given explicitly (constants fold away).
     #[inline(always)]
     fn eval_switched(
@@ -81,6 +152,7 @@ impl<T: Real> Dynamics<'_, T> {
         decay: bool,
         wind: bool,
     ) -> State<T> {
+        // (Not through `forces_switched`: the same arithmetic, without its bookkeeping.)
         let p = self.scene;
         let v = Vector3::new(y[3], y[4], y[5]);
         let s = y[S];
@@ -104,6 +176,71 @@ impl<T: Real> Dynamics<'_, T> {
             }
         }
         [v.x, v.y, v.z, a.x, a.y, a.z, ds]
+    }
+
+    /// One force evaluation with what it was made of (the ground's hops). Inlined on hosts
+    /// (the run-out is a chain of dependent steps; a call costs it time), out of line on
+    /// bare-metal targets (size).
+    #[cfg_attr(not(target_os = "none"), inline(always))]
+    pub(crate) fn forces(&self, y: &State<T>) -> ForceEvaluation<T> {
+        let e = &self.scene.effects;
+        self.forces_switched(y, e.drag, e.lift, e.spin_decay, self.scene.has_wind())
+    }
+
+    /// The rates of change of the acceleration and of the spin rate over a short hop
+    /// from `f`, with the speed changing by the drag alone: in still air or a uniform wind
+    /// `dv_r/dt = a`, and
+    ///
+    /// ```text
+    /// da/dt ≈ −k_d·a + k_l·(ω̂ × a) − k̇_d·v_r + k̇_l·(ω̂ × v_r),   k̇ = ∂k/∂V·V̇ + ∂k/∂s·ṡ
+    /// V̇ = −k_d·V,   ṡ = −λV·s,   d²s/dt² = −λ(V̇s + Vṡ) = (V̇/V − λV)·ṡ
+    /// ```
+    ///
+    /// Gravity's share of `V̇` is left out on purpose: the speed dips towards the apex of a
+    /// hop and is back at its landing, so over the hop it averages out (what a secant
+    /// through both ends sees); lift does no work. In a wind profile `v_r` also changes
+    /// with height and this does not hold.
+    #[cfg_attr(not(target_os = "none"), inline(always))]
+    pub(crate) fn rates_held(&self, f: &ForceEvaluation<T>) -> (Vector3<T>, T) {
+        self.rates_along(f, -f.drag)
+    }
+
+    /// The same rates at the instant of `f` (a tangent, not a hop's secant): the speed
+    /// changing at `V̇ = v_r·a/V` (gravity included; 0 at `V = 0`).
+    pub(crate) fn rates_now(&self, f: &ForceEvaluation<T>) -> (Vector3<T>, T) {
+        // (1/V² beside the dot product: only a multiply after it.)
+        let relative = f.relative_velocity.dot(&f.acceleration) * (T::one() / f.speed_sq);
+        let relative = if relative.is_finite() {
+            relative
+        } else {
+            T::zero()
+        };
+        self.rates_along(f, relative)
+    }
+
+    /// The rates with the speed changing at the relative rate `V̇/V` (1/s).
+    #[inline(always)]
+    fn rates_along(&self, f: &ForceEvaluation<T>, relative_speed_rate: T) -> (Vector3<T>, T) {
+        let e = &self.scene.effects;
+        let a = f.acceleration;
+        let (dkd, dkl) = if e.drag || e.lift {
+            self.scene.aero.forces.factor_rates(
+                f.speed,
+                f.speed_sq,
+                f.spin,
+                relative_speed_rate,
+                f.spin_rate,
+                e.drag,
+                e.lift,
+            )
+        } else {
+            (T::zero(), T::zero())
+        };
+        let vr = f.relative_velocity;
+        (
+            self.axis.cross(&(a * f.lift + vr * dkl)) - (a * f.drag + vr * dkd),
+            (relative_speed_rate - f.decay) * f.spin_rate,
+        )
     }
 }
 

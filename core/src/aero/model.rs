@@ -215,6 +215,11 @@ impl<T: Real> Crisis<T> {
     /// `Δ·crisis` at `q = V²`: `Δ/(1 + w³)` with `w³ = q²·(q·k⁶)`, the two products side
     /// by side (two multiplies deep, not three), then one division (`Δ` in the numerator
     /// rather than a multiply after it: it is on the force's critical path).
+    /// The crisis weight `1/(1 + w³)` alone (for its derivative).
+    fn weight(&self, speed_sq: T) -> T {
+        T::one() / (T::one() + (speed_sq * speed_sq) * (speed_sq * self.per_speed_6))
+    }
+
     #[inline(always)]
     fn at(&self, speed_sq: T) -> T {
         self.below / (T::one() + (speed_sq * speed_sq) * (speed_sq * self.per_speed_6))
@@ -280,6 +285,83 @@ impl<T: Real> Forces<T> {
     }
 }
 
+impl<T: Real> Forces<T> {
+    /// The rates of change `(dk_d/dt, dk_l/dt)` (1/s²) of the factors of
+    /// [`Forces::factors`] when the air speed changes at the relative rate
+    /// `relative_speed_rate = V̇/V` (1/s) and the spin at `spin_rate` (rad/s²):
+    /// `∂k/∂V·V̇ + ∂k/∂s·ṡ`. For the modern family, with `F = saturation(u)·V`,
+    /// `u = S/S_sat = k/V`, `k = (R/S_sat)·s` and the crisis weight
+    /// `c = 1/(1 + (Re/Re_c)⁶)`:
+    ///
+    /// ```text
+    /// ∂F/∂V·V = u²·(6V − 8k + 3u²V)   (u < 1; V above),      ∂(Δ·c·V)/∂V = Δ·c·(6c − 5)
+    /// ```
+    ///
+    /// (from `u²` alone, beside the square root). The modern family's spin term is left
+    /// out: it is zero past the lift's saturation (a ball after a bounce), and below it the
+    /// spin decays by about 1–2 % a second at run-out speeds.
+    #[allow(clippy::too_many_arguments)]
+    pub(crate) fn factor_rates(
+        &self,
+        speed: T,
+        speed_sq: T,
+        spin: T,
+        relative_speed_rate: T,
+        spin_rate: T,
+        drag: bool,
+        lift: bool,
+    ) -> (T, T) {
+        let zero = T::zero();
+        let speed_rate = relative_speed_rate * speed;
+        match *self {
+            Self::Linear {
+                drag_v,
+                drag_s,
+                lift_v,
+                lift_s,
+            } => (
+                if drag {
+                    drag_v * speed_rate + drag_s * spin_rate
+                } else {
+                    zero
+                },
+                if lift {
+                    lift_v * speed_rate + lift_s * spin_rate
+                } else {
+                    zero
+                },
+            ),
+            Self::Modern {
+                drag_v,
+                crisis,
+                drag_lift,
+                lift_v,
+                saturation_per_spin,
+            } => {
+                let k = saturation_per_spin * spin;
+                // At V = 0, u² is ∞ or NaN: the saturated branch, as in `factors`.
+                let u_sq = k * k / speed_sq;
+                let saturation_rate = if u_sq < T::one() {
+                    let three_u_sq = lit::<T>(3.0) * u_sq;
+                    u_sq * (lit::<T>(6.0) * speed - lit::<T>(8.0) * k + three_u_sq * speed)
+                        * relative_speed_rate
+                } else {
+                    speed_rate
+                };
+                let dkd = if drag {
+                    let c = crisis.weight(speed_sq);
+                    let crisis_per_speed = crisis.below * c * (lit::<T>(6.0) * c - lit::<T>(5.0));
+                    (drag_v + crisis_per_speed) * speed_rate + drag_lift * saturation_rate
+                } else {
+                    zero
+                };
+                let dkl = if lift { lift_v * saturation_rate } else { zero };
+                (dkd, dkl)
+            }
+        }
+    }
+}
+
 /// `saturation(S/S_sat)·V = P + Q·V` ([`ModernAero::saturation`]) from `k = (R/S_sat)·s`
 /// and `q = V²`, without `V`: with `u = S/S_sat = k/V` and `u² = k²/q`,
 /// `(1 − (1 − u)⁴)·V = 4u·V − 6u²·V + 4u³·V − u⁴·V = 4k·(1 + u²) − (6 + u²)·u²·V` below
@@ -294,5 +376,48 @@ fn saturation_times_speed<T: Real>(k: T, speed_sq: T) -> (T, T) {
         )
     } else {
         (T::zero(), T::one())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `factor_rates` against central differences of `factors` along a speed and a spin
+    /// change, for both families: below and past the lift's saturation, below, inside and
+    /// above the drag crisis. The modern family leaves its spin term out (documented), so
+    /// it is checked with the speed changing alone.
+    #[test]
+    fn factor_rates_are_the_factors_derivatives() {
+        let ball = Ball::<f64>::standard();
+        for model in [AeroModel::quintavalla(), AeroModel::tour_2023()] {
+            let Ok(p) = model.prepare(&ball, 1.225, crate::air::STANDARD_VISCOSITY_PAS) else {
+                panic!("prepare")
+            };
+            let linear = matches!(p.forces, Forces::Linear { .. });
+            let k = |v: f64, s: f64| p.forces.factors(v, v * v, s, true, true);
+            for (v, s) in [
+                (6.0, 290.0),
+                (20.0, 150.0),
+                (25.0, 40.0),
+                (45.0, 300.0),
+                (3.0, 800.0),
+            ] {
+                let (rel, spin_rate) = (-0.05, if linear { -3.0 } else { 0.0 });
+                let (dkd, dkl) = p
+                    .forces
+                    .factor_rates(v, v * v, s, rel, spin_rate, true, true);
+                let dt = 1e-4;
+                let (v1, s1) = (v * (1.0 + rel * dt), s + spin_rate * dt);
+                let (v0, s0) = (v * (1.0 - rel * dt), s - spin_rate * dt);
+                let ((d1, l1), (d0, l0)) = (k(v1, s1), k(v0, s0));
+                let (fd, fl) = ((d1 - d0) / (2.0 * dt), (l1 - l0) / (2.0 * dt));
+                let close = |a: f64, b: f64| (a - b).abs() <= 1e-6 * b.abs().max(1e-3);
+                assert!(
+                    close(dkd, fd) && close(dkl, fl),
+                    "{v} m/s, {s} rad/s: ({dkd}, {dkl}) against ({fd}, {fl})"
+                );
+            }
+        }
     }
 }

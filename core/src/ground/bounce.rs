@@ -56,6 +56,8 @@ pub struct Rebound<T: Real> {
     pub velocity_mps: Vector3<T>,
     /// Ball spin after the bounce (rad/s, G).
     pub spin_radps: Vector3<T>,
+    /// The rebound's speed away from the ground plane, `velocity_mps · n̂` (m/s, ≥ 0).
+    pub normal_speed_mps: T,
     /// Whether the contact reached rolling (slip stopped) during the bounce.
     pub rolled: bool,
 }
@@ -114,12 +116,17 @@ pub(crate) fn rebound<T: Real>(
     radius_m: T,
 ) -> Rebound<T> {
     let vn = larger(-velocity.dot(n), T::zero());
+    // The impact speed and the tangential speed from |v|² and v_n² (both squares side by
+    // side; not the length of the tangential velocity, which waits on v_n): with them
+    // `u² + v_n'² = |v|²` below holds to rounding (no `hypot`: libm's single-precision
+    // one works in f64, software on a Cortex-M4F).
+    let speed_sq = velocity.norm_squared();
+    let speed = speed_sq.sqrt();
+    let vt = larger(speed_sq - vn * vn, T::zero()).sqrt();
+    // The direction of the tangential velocity (off the critical path: only `w` and the
+    // rebound's direction need it).
     let vt_vec = velocity + n * vn;
-    let vt_sq = vt_vec.norm_squared();
-    let vt = vt_sq.sqrt();
-    // (No `hypot`: libm's single-precision one works in f64, software on a Cortex-M4F.)
-    let speed = (vt_sq + vn * vn).sqrt();
-    let t = tangent_direction(&vt_vec, vt, spin, n);
+    let t = tangent_direction(&vt_vec, vt_vec.norm(), spin, n);
     let b = t.cross(n);
     let w = spin.dot(&b);
     let phi = crate::geometry::atan2_first_quadrant(vt, vn);
@@ -160,15 +167,19 @@ pub(crate) fn rebound<T: Real>(
     let t1 = t * c + n * s;
     let n1 = n * c - t * s;
     let mut out = t1 * u1 + n1 * v1;
-    // A fast backward exit out of the tilted crater would point into the ground plane:
-    // the ground stops that part (the ball leaves along it).
-    let into = out.dot(n);
-    if into < T::zero() {
-        out -= n * into;
+    // The rebound's normal speed `out·n̂ = u'·sin θ_c + v'·cos θ_c` (t̂ ⊥ n̂), beside `out`
+    // rather than a dot product after it. A fast backward exit out of the tilted crater
+    // would point into the ground plane: the ground stops that part (the ball leaves
+    // along it).
+    let mut normal_speed = u1 * s + v1 * c;
+    if normal_speed < T::zero() {
+        out -= n * normal_speed;
+        normal_speed = T::zero();
     }
     Rebound {
         velocity_mps: out,
         spin_radps: spin + b * (w1 - w),
+        normal_speed_mps: normal_speed,
         rolled,
     }
 }

@@ -19,6 +19,7 @@ pub mod bounce;
 pub mod roll;
 pub mod surface;
 
+use crate::aero::ForceEvaluation;
 use crate::error::{Error, Field, Reason, Result};
 use crate::flight::{Recorder, Stats};
 use crate::real::{Real, larger, lit};
@@ -31,10 +32,10 @@ pub const STOP_HEIGHT_M: f64 = 0.005;
 /// At most this many hops; the ball then rolls (a bound on the run time, never reached by
 /// a golf shot: they stop within about ten).
 pub const MAX_BOUNCES: u32 = 64;
-/// Hops lower than this (m) fly in closed form with the scene's forces at their two ends
-/// (two force evaluations, the acceleration linear in time; see `low_hop`); flying them
-/// with the integrator costs 7 force evaluations or more and an event search. Higher hops
-/// are integrated. docs/ground.md measures what this changes (millimetres).
+/// Hops lower than this (m) fly in closed form (one force evaluation and its rate over the
+/// hop, three in a wind profile; see `low_hop`); flying them with the integrator costs 7
+/// force evaluations and a landing search. Higher hops are integrated. docs/ground.md
+/// measures what this changes (centimetres over a run-out).
 pub const LOW_HOP_HEIGHT_M: f64 = 1.0;
 /// Steepest accepted ground (rad): 45°.
 pub const MAX_SLOPE_RAD: f64 = core::f64::consts::FRAC_PI_4;
@@ -172,7 +173,7 @@ pub struct Rollout<T: Real> {
 }
 
 /// The state at a ground contact.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct Contact<T: Real> {
     pub(crate) time: T,
     pub(crate) position: Vector3<T>,
@@ -191,9 +192,10 @@ pub(crate) trait Hopper<T: Real> {
         stats: &mut Stats,
     ) -> Result<Contact<T>>;
 
-    /// The acceleration (m/s², G, gravity included) and the rate of change of the spin
-    /// magnitude (rad/s²) of a ball at `position` with `velocity`, spinning at `spin`
-    /// (rad/s) about the unit `axis` (zero without spin): one force evaluation.
+    /// The acceleration (m/s², G, gravity included), the rate of change of the spin
+    /// magnitude (rad/s²) and the coefficients behind them, of a ball at `position` with
+    /// `velocity`, spinning at `spin` (rad/s) about the unit `axis` (zero without spin):
+    /// one force evaluation.
     fn forces(
         &self,
         position: &Vector3<T>,
@@ -201,29 +203,52 @@ pub(crate) trait Hopper<T: Real> {
         spin: T,
         axis: &Vector3<T>,
         stats: &mut Stats,
-    ) -> (Vector3<T>, T);
+    ) -> ForceEvaluation<T>;
+
+    /// The rates of change of the acceleration and of the spin rate over a short hop from
+    /// the evaluation `forces` of a ball spinning about `axis` (`aero::Dynamics::rates_held`).
+    fn rates_held(&self, forces: &ForceEvaluation<T>, axis: &Vector3<T>) -> (Vector3<T>, T);
 
     /// Whether the forces see a wind that changes with height (a profile).
     fn wind_varies(&self) -> bool;
 }
 
-/// A low hop in closed form with the scene's forces at its ends: the acceleration and the
-/// spin's rate of change are taken linear in time between their values at the bounce and
-/// at the landing predicted with the initial force (two force evaluations):
+/// How a low hop's closed form takes the scene's forces (see [`low_hop`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum HopForces {
+    /// Still air or a uniform wind: one evaluation at the bounce and its rate over the hop.
+    Held,
+    /// A wind profile: three evaluations, at the bounce, at the predicted landing and in
+    /// the middle of the hop.
+    ThreePoints,
+}
+
+/// A low hop in closed form: the acceleration and the spin's rate of change linear (or
+/// quadratic) in time,
 ///
 /// ```text
-/// p(τ) = p₀ + v₀τ + a₀τ²/2 + jτ³/6,   v(τ) = v₀ + a₀τ + jτ²/2,   j = (a₁ − a₀)/τ₁
+/// p(τ) = p₀ + v₀τ + a₀τ²/2 + jτ³/6,   v(τ) = v₀ + a₀τ + jτ²/2
 /// ```
 ///
-/// landing where `n̂·(p − p₀) = 0`, a quadratic in `τ` (solved exactly). In a wind profile
-/// (zero wind at the ground, where both ends are) a third evaluation in the middle of the
-/// hop makes the acceleration quadratic in time. `None` when the force does not pull the
-/// ball back to the plane.
+/// landing where `n̂·(p − p₀) = 0`, a quadratic in `τ` (solved exactly). The rate `j`
+/// ([`HopForces`]):
+/// - `Held`: from the one evaluation at the bounce (`aero::Dynamics::rates_held`): the
+///   force's change with the velocity, and its factors' change as the drag slows the ball
+///   and the spin decays. Gravity's share of the speed's change is left out: the speed
+///   dips towards the apex and is back at the landing. Against the same hops integrated
+///   it is as close as a second evaluation at the landing (unit test
+///   `flight::tests::closed_form_hop_matches_the_integrated_hop`; docs/ground.md);
+/// - `ThreePoints`: in a wind profile the air velocity changes with height (zero at the
+///   ground, where both ends are), so the forces are evaluated at the bounce, at the
+///   landing predicted with `a₀` (`j = (a₁ − a₀)/τ₁`) and in the middle of that hop, and
+///   the acceleration is quadratic in time through the three.
+///
+/// `None` when the force does not pull the ball back to the plane.
 pub(crate) fn low_hop<T: Real, H: Hopper<T>>(
     from: &Contact<T>,
     n: &Vector3<T>,
     hopper: &H,
-    wind_varies: bool,
+    form: HopForces,
     stats: &mut Stats,
     recorder: Option<&mut Recorder<'_, T>>,
 ) -> Option<Contact<T>> {
@@ -235,7 +260,8 @@ pub(crate) fn low_hop<T: Real, H: Hopper<T>>(
     } else {
         Vector3::zeros()
     };
-    let (a0, s0) = hopper.forces(&from.position, &from.velocity, spin0, &axis, stats);
+    let f0 = hopper.forces(&from.position, &from.velocity, spin0, &axis, stats);
+    let (a0, s0) = (f0.acceleration, f0.spin_rate);
     let vn = from.velocity.dot(n);
     let two = lit::<T>(2.0);
     // First guess: the parabola of the initial force.
@@ -243,12 +269,9 @@ pub(crate) fn low_hop<T: Real, H: Hopper<T>>(
     if !(an < T::zero()) {
         return None;
     }
-    // τ₁ and 1/τ₁ side by side (two divisions, neither waiting on the other).
-    let t1 = -two * vn / an;
-    let per_t1 = -an / (two * vn);
     let half = lit::<T>(0.5);
     let sixth = lit::<T>(1.0 / 6.0);
-    // The spin magnitude, its rate linear in time between the ends (never below zero).
+    // The spin magnitude, its rate linear in time (never below zero).
     let spin_at = |tau: T, rate0: T, jerk: T| {
         larger(spin0 + rate0 * tau + jerk * tau * tau * half, T::zero())
     };
@@ -275,31 +298,29 @@ pub(crate) fn low_hop<T: Real, H: Hopper<T>>(
             None => (p, v),
         }
     };
-    let zero = Vector3::zeros();
-    let (p1, v1) = state(t1, &zero);
-    let (a1, s1) = hopper.forces(&p1, &v1, spin_at(t1, s0, T::zero()), &axis, stats);
-    let (j, spin_jerk) = ((a1 - a0) * per_t1, (s1 - s0) * per_t1);
-    // n̂·(p − p₀)/τ = vn + an τ/2 + jn τ²/6 = 0: the quadratic's root that continues the
-    // parabola's (stable form 2c/(−b + √(b² − 4ac)), a = jn/6, b = an/2 < 0, c = vn > 0).
-    // jn = j·n from the normal accelerations (one dot product after a₁, not two steps).
-    let jn = (a1.dot(n) - an) * per_t1;
-    let b = an * half;
-    let disc = b * b - jn * (lit::<T>(2.0 / 3.0) * vn);
-    if !(disc >= T::zero()) {
-        return None;
-    }
-    let tau = two * vn / (disc.sqrt() - b);
-    if !(tau > T::zero() && tau.is_finite()) {
-        return None;
-    }
-    // In a wind profile both ends are on the ground, where its wind is zero: a third
-    // evaluation in the middle of the hop, and the acceleration quadratic in time through
-    // the three, `j = (4a_m − 3a₀ − a₁)/τ₁`, `q = 2(a₀ + a₁ − 2a_m)/τ₁²`; the landing by
-    // Newton's method from the two-end root on `vn + a_nτ/2 + j_nτ²/6 + q_nτ³/12 = 0`.
-    let (j, q, tau) = if wind_varies {
+    let landing = |jn: T| hop_landing(vn, an, jn);
+    let (j, spin_jerk, q, tau) = if form == HopForces::Held {
+        let (j, spin_jerk) = hopper.rates_held(&f0, &axis);
+        (j, spin_jerk, None, landing(j.dot(n))?)
+    } else {
+        // τ₁ and 1/τ₁ side by side (two divisions, neither waiting on the other).
+        let t1 = -two * vn / an;
+        let per_t1 = -an / (two * vn);
+        let zero = Vector3::zeros();
+        let (p1, v1) = state(t1, &zero);
+        let f1 = hopper.forces(&p1, &v1, spin_at(t1, s0, T::zero()), &axis, stats);
+        let a1 = f1.acceleration;
+        let (j, spin_jerk) = ((a1 - a0) * per_t1, (f1.spin_rate - s0) * per_t1);
+        // jn = j·n from the normal accelerations (one dot product after a₁, not two steps).
+        let tau = landing((a1.dot(n) - an) * per_t1)?;
+        // Through the three, `j = (4a_m − 3a₀ − a₁)/τ₁`, `q = 2(a₀ + a₁ − 2a_m)/τ₁²`; the
+        // landing by Newton's method from the two-end root on
+        // `vn + a_nτ/2 + j_nτ²/6 + q_nτ³/12 = 0`.
         let tm = t1 * half;
         let (pm, vm) = state(tm, &j);
-        let (am, _) = hopper.forces(&pm, &vm, spin_at(tm, s0, spin_jerk), &axis, stats);
+        let am = hopper
+            .forces(&pm, &vm, spin_at(tm, s0, spin_jerk), &axis, stats)
+            .acceleration;
         let j = (am * lit::<T>(4.0) - a0 * lit::<T>(3.0) - a1) * per_t1;
         let q = (a0 + a1 - am * two) * (two * per_t1 * per_t1);
         let (jn, qn) = (j.dot(n), q.dot(n));
@@ -314,33 +335,13 @@ pub(crate) fn low_hop<T: Real, H: Hopper<T>>(
         if !(tau > T::zero() && tau.is_finite()) {
             return None;
         }
-        (j, Some(q), tau)
-    } else {
-        (j, None, tau)
+        (j, spin_jerk, Some(q), tau)
     };
     if let Some(r) = recorder {
-        let dt = r.interval();
-        let k = crate::real::to_f64(from.time / dt);
-        let mut k = if k.is_finite() && k > 0.0 {
-            k as u32
-        } else {
-            0
-        };
-        // Every pass pushes a sample; a full recorder stops it.
-        while !r.is_full() {
-            k = k.saturating_add(1);
-            let t = lit::<T>(f64::from(k)) * dt - from.time;
-            if !(t > T::zero() && t < tau) {
-                break;
-            }
+        r.record_hop(from.time, tau, &axis, |t| {
             let (p, v) = state_q(t, &j, q.as_ref());
-            r.push(crate::flight::Sample {
-                time_s: from.time + t,
-                position_m: p,
-                velocity_mps: v,
-                spin_radps: axis * spin_at(t, s0, spin_jerk),
-            });
-        }
+            (p, v, spin_at(t, s0, spin_jerk))
+        });
     }
     // (The plain closure when there is no q: the `Option` in the landing's state cost ~25
     // instructions a shot on the M4F.)
@@ -354,6 +355,38 @@ pub(crate) fn low_hop<T: Real, H: Hopper<T>>(
         velocity,
         spin: axis * spin_at(tau, s0, spin_jerk),
     })
+}
+
+/// The landing time `τ > 0` of a hop leaving the plane at normal speed `vn > 0` with normal
+/// acceleration `an < 0` and normal jerk `jn`: the root of `vn + an τ/2 + jn τ²/6 = 0` that
+/// continues the parabola's `τ₀ = −2vn/an`; `None` when there is none.
+///
+/// With `τ = τ₀·y` and `x = −jn·τ₀/(3an)`, `y = 1 + x y²`, so `y = Σ Cₖ xᵏ` (Catalan
+/// numbers 1, 1, 2, 5, 14, 42, …). For `|x| ≤ 1/32` (a low hop's `x` is about 0.01) the
+/// series to `x⁵` (truncation `132x⁶ < 1.3·10⁻⁷` relative): `τ₀` and the scale of `x` need
+/// only `an` and run beside the jerk's computation, and after `jn` it is a few
+/// multiply–adds where the closed form `2vn/(√(an²/4 − 2jn·vn/3) − an/2)` (used otherwise)
+/// waits on a square root and a division.
+#[inline]
+pub(crate) fn hop_landing<T: Real>(vn: T, an: T, jn: T) -> Option<T> {
+    let two = lit::<T>(2.0);
+    let per_an = T::one() / an;
+    let tau0 = -two * vn * per_an;
+    let x = jn * (tau0 * per_an * lit::<T>(-1.0 / 3.0));
+    if x.abs() <= lit::<T>(1.0 / 32.0) && tau0 > T::zero() && tau0.is_finite() {
+        let x2 = x * x;
+        let low = T::one() + x + x2 * (two + lit::<T>(5.0) * x);
+        let high = lit::<T>(14.0) + lit::<T>(42.0) * x;
+        return Some(tau0 * (low + (x2 * x2) * high));
+    }
+    // The stable form 2c/(−b + √(b² − 4ac)), a = jn/6, b = an/2 < 0, c = vn > 0.
+    let b = an * lit::<T>(0.5);
+    let disc = b * b - jn * (lit::<T>(2.0 / 3.0) * vn);
+    if !(disc >= T::zero()) {
+        return None;
+    }
+    let tau = two * vn / (disc.sqrt() - b);
+    (tau > T::zero() && tau.is_finite()).then_some(tau)
 }
 
 /// Bounces and rolls from the first landing `first` to rest.
@@ -382,7 +415,7 @@ pub(crate) fn run_out<T: Real, H: Hopper<T>>(
     let mut bounces = 0_u32;
     let roll_velocity = loop {
         let r = bounce::rebound(&at.velocity, &at.spin, &n, &ground.turf, ground.radius);
-        let vn = r.velocity_mps.dot(&n);
+        let vn = r.normal_speed_mps;
         if !(vn > T::zero() && vn * vn >= hop_speed_sq) || bounces >= MAX_BOUNCES {
             break r.velocity_mps - n * vn;
         }
@@ -393,14 +426,12 @@ pub(crate) fn run_out<T: Real, H: Hopper<T>>(
             ..at
         };
         let low = if vn * vn < low_hop_speed_sq {
-            low_hop(
-                &from,
-                &n,
-                hopper,
-                wind_varies,
-                &mut stats,
-                recorder.as_deref_mut(),
-            )
+            let form = if wind_varies {
+                HopForces::ThreePoints
+            } else {
+                HopForces::Held
+            };
+            low_hop(&from, &n, hopper, form, &mut stats, recorder.as_deref_mut())
         } else {
             None
         };
@@ -461,6 +492,33 @@ mod tests {
         match Ground::level(Surface::green()).prepare(0.021336) {
             Ok(g) => g,
             Err(e) => panic!("{e}"),
+        }
+    }
+
+    /// The series landing against the quadratic's closed-form root, across and beyond the
+    /// series' range (a low hop's x ≈ 0.01), and no root where there is none.
+    #[test]
+    fn hop_landing_is_the_quadratics_root() {
+        for vn in [0.05, 0.7, 2.6, 4.4] {
+            for an in [-14.0, -9.8, -6.0] {
+                for jn in [-40.0, -3.0, -0.5, 0.0, 0.2, 1.0, 6.0] {
+                    let exact = {
+                        let b = 0.5 * an;
+                        let disc: f64 = b * b - jn * (2.0 / 3.0) * vn;
+                        (disc >= 0.0).then(|| 2.0 * vn / (disc.sqrt() - b))
+                    };
+                    let tau = hop_landing(vn, an, jn);
+                    match (tau, exact) {
+                        (Some(t), Some(e)) => {
+                            assert!((t - e).abs() <= 2e-7 * e, "{vn} {an} {jn}: {t} {e}");
+                            let g = vn + an * t / 2.0 + jn * t * t / 6.0;
+                            assert!(g.abs() <= 1e-6 * vn, "{vn} {an} {jn}: residual {g}");
+                        }
+                        (None, None) => {}
+                        other => panic!("{vn} {an} {jn}: {other:?}"),
+                    }
+                }
+            }
         }
     }
 
