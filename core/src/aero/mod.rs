@@ -152,30 +152,9 @@ impl<T: Real> Dynamics<'_, T> {
         decay: bool,
         wind: bool,
     ) -> State<T> {
-        // (Not through `forces_switched`: the same arithmetic, without its bookkeeping.)
-        let p = self.scene;
-        let v = Vector3::new(y[3], y[4], y[5]);
-        let s = y[S];
-        let mut a = Vector3::new(T::zero(), -p.gravity, T::zero());
-        let mut ds = T::zero();
-        if drag || lift || decay {
-            let vr = if wind { v - p.wind.at(y[Y]) } else { v };
-            let speed_sq = vr.norm_squared();
-            let speed = speed_sq.sqrt();
-            if drag || lift {
-                let (kd, kl) = p.aero.forces.factors(speed, speed_sq, s, drag, lift);
-                if drag {
-                    a -= vr * kd;
-                }
-                if lift {
-                    a += self.axis.cross(&vr) * kl;
-                }
-            }
-            if decay {
-                ds = -p.aero.decay * speed * s;
-            }
-        }
-        [v.x, v.y, v.z, a.x, a.y, a.z, ds]
+        let f = self.forces_switched(y, drag, lift, decay, wind);
+        let a = f.acceleration;
+        [y[3], y[4], y[5], a.x, a.y, a.z, f.spin_rate]
     }
 
     /// One force evaluation with what it was made of (the ground's hops). Inlined on hosts

@@ -314,23 +314,8 @@ impl<T: Real> Forces<T> {
         let zero = T::zero();
         let speed_rate = relative_speed_rate * speed;
         match *self {
-            Self::Linear {
-                drag_v,
-                drag_s,
-                lift_v,
-                lift_s,
-            } => (
-                if drag {
-                    drag_v * speed_rate + drag_s * spin_rate
-                } else {
-                    zero
-                },
-                if lift {
-                    lift_v * speed_rate + lift_s * spin_rate
-                } else {
-                    zero
-                },
-            ),
+            // Linear in V and s: the rates are the laws at (V̇, ṡ).
+            Self::Linear { .. } => self.factors(speed_rate, zero, spin_rate, drag, lift),
             Self::Modern {
                 drag_v,
                 crisis,
