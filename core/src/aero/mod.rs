@@ -92,6 +92,17 @@ pub(crate) struct ForceEvaluation<T: Real> {
     decay: T,
 }
 
+impl<T: Real> ForceEvaluation<T> {
+    /// `dy/dt` at the state `y` this evaluation was made at: its velocity, this
+    /// acceleration and spin rate.
+    #[inline(always)]
+    #[must_use]
+    pub(crate) fn derivative(&self, y: &State<T>) -> State<T> {
+        let a = self.acceleration;
+        [y[3], y[4], y[5], a.x, a.y, a.z, self.spin_rate]
+    }
+}
+
 impl<T: Real> Dynamics<'_, T> {
     /// The forces with the effect switches given explicitly (constants fold away).
     #[inline(always)]
@@ -152,9 +163,8 @@ impl<T: Real> Dynamics<'_, T> {
         decay: bool,
         wind: bool,
     ) -> State<T> {
-        let f = self.forces_switched(y, drag, lift, decay, wind);
-        let a = f.acceleration;
-        [y[3], y[4], y[5], a.x, a.y, a.z, f.spin_rate]
+        self.forces_switched(y, drag, lift, decay, wind)
+            .derivative(y)
     }
 
     /// One force evaluation with what it was made of (the ground's hops). Inlined on hosts

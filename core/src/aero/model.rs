@@ -212,17 +212,23 @@ impl<T: Real> Crisis<T> {
         }
     }
 
-    /// `Δ·crisis` at `q = V²`: `Δ/(1 + w³)` with `w³ = q²·(q·k⁶)`, the two products side
-    /// by side (two multiplies deep, not three), then one division (`Δ` in the numerator
-    /// rather than a multiply after it: it is on the force's critical path).
-    /// The crisis weight `1/(1 + w³)` alone (for its derivative).
-    fn weight(&self, speed_sq: T) -> T {
-        T::one() / (T::one() + (speed_sq * speed_sq) * (speed_sq * self.per_speed_6))
+    /// `1 + w³` at `q = V²`, with `w³ = q²·(q·k⁶)`: the two products side by side (two
+    /// multiplies deep, not three).
+    #[inline(always)]
+    fn one_plus_w3(&self, speed_sq: T) -> T {
+        T::one() + (speed_sq * speed_sq) * (speed_sq * self.per_speed_6)
     }
 
+    /// `Δ·crisis` at `q = V²`: `Δ/(1 + w³)`, one division (`Δ` in the numerator rather than
+    /// a multiply after it: it is on the force's critical path).
     #[inline(always)]
     fn at(&self, speed_sq: T) -> T {
-        self.below / (T::one() + (speed_sq * speed_sq) * (speed_sq * self.per_speed_6))
+        self.below / self.one_plus_w3(speed_sq)
+    }
+
+    /// The crisis weight `c = 1/(1 + w³)` alone (for its derivative).
+    fn weight(&self, speed_sq: T) -> T {
+        T::one() / self.one_plus_w3(speed_sq)
     }
 }
 

@@ -25,6 +25,17 @@ pub struct Stats {
     pub rejected_steps: u32,
 }
 
+impl Stats {
+    /// Adds another run's work (a hop's to the run-out's), saturating.
+    pub(crate) fn add(&mut self, other: &Stats) {
+        self.force_evaluations = self
+            .force_evaluations
+            .saturating_add(other.force_evaluations);
+        self.steps = self.steps.saturating_add(other.steps);
+        self.rejected_steps = self.rejected_steps.saturating_add(other.rejected_steps);
+    }
+}
+
 /// `y + h Σ cⱼ kⱼ`, panic-free (iterators over fixed arrays).
 #[inline(always)]
 fn combine<T: Real, const K: usize>(

@@ -223,6 +223,17 @@ pub(crate) enum HopForces {
     ThreePoints,
 }
 
+impl HopForces {
+    /// The form for a scene whose wind does (a profile) or does not vary with height.
+    pub(crate) fn for_wind(varies_with_height: bool) -> Self {
+        if varies_with_height {
+            Self::ThreePoints
+        } else {
+            Self::Held
+        }
+    }
+}
+
 /// A low hop in closed form: the acceleration and the spin's rate of change linear (or
 /// quadratic) in time,
 ///
@@ -298,10 +309,9 @@ pub(crate) fn low_hop<T: Real, H: Hopper<T>>(
             None => (p, v),
         }
     };
-    let landing = |jn: T| hop_landing(vn, an, jn);
     let (j, spin_jerk, q, tau) = if form == HopForces::Held {
         let (j, spin_jerk) = hopper.rates_held(&f0, &axis);
-        (j, spin_jerk, None, landing(j.dot(n))?)
+        (j, spin_jerk, None, hop_landing(vn, an, j.dot(n))?)
     } else {
         // τ₁ and 1/τ₁ side by side (two divisions, neither waiting on the other).
         let t1 = -two * vn / an;
@@ -312,7 +322,7 @@ pub(crate) fn low_hop<T: Real, H: Hopper<T>>(
         let a1 = f1.acceleration;
         let (j, spin_jerk) = ((a1 - a0) * per_t1, (f1.spin_rate - s0) * per_t1);
         // jn = j·n from the normal accelerations (one dot product after a₁, not two steps).
-        let tau = landing((a1.dot(n) - an) * per_t1)?;
+        let tau = hop_landing(vn, an, (a1.dot(n) - an) * per_t1)?;
         // Through the three, `j = (4a_m − 3a₀ − a₁)/τ₁`, `q = 2(a₀ + a₁ − 2a_m)/τ₁²`; the
         // landing by Newton's method from the two-end root on
         // `vn + a_nτ/2 + j_nτ²/6 + q_nτ³/12 = 0`.
@@ -410,7 +420,7 @@ pub(crate) fn run_out<T: Real, H: Hopper<T>>(
     let hop_speed_sq = lit::<T>(2.0 * STOP_HEIGHT_M) * g_n;
     let low_hop_speed_sq = lit::<T>(2.0 * LOW_HOP_HEIGHT_M) * g_n;
     let mut stats = Stats::default();
-    let wind_varies = hopper.wind_varies();
+    let form = HopForces::for_wind(hopper.wind_varies());
     let mut at = *first;
     let mut bounces = 0_u32;
     let roll_velocity = loop {
@@ -426,11 +436,6 @@ pub(crate) fn run_out<T: Real, H: Hopper<T>>(
             ..at
         };
         let low = if vn * vn < low_hop_speed_sq {
-            let form = if wind_varies {
-                HopForces::ThreePoints
-            } else {
-                HopForces::Held
-            };
             low_hop(&from, &n, hopper, form, &mut stats, recorder.as_deref_mut())
         } else {
             None
