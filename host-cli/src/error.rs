@@ -174,7 +174,7 @@ impl From<Error> for InputError {
             ),
             Error::TimeLimit => Self::new(
                 "time_limit",
-                "the ball had not landed when the time limit was reached",
+                "the time limit was reached before the ball landed, or while it was still bouncing",
             ),
             Error::StepSizeUnderflow => Self::new(
                 "tolerance",

@@ -370,9 +370,10 @@ pub struct FlightOutcome<T: Real> {
 /// # Errors
 /// [`Error::InvalidInput`] for an invalid scene, launch or integrator (NaN/∞, negative
 /// density, humidity outside [0, 1], landing height not finite, non-positive step or
-/// tolerance); [`Error::NoLanding`] when the ball never comes down through the landing
+/// tolerance, a launch faster than [`MAX_BALL_SPEED_MPS`] or spinning faster than
+/// [`MAX_SPIN_RADPS`]); [`Error::NoLanding`] when the ball never comes down through the landing
 /// height; [`Error::TimeLimit`]; [`Error::StepSizeUnderflow`] when the adaptive step cannot
-/// meet the tolerance (also for `rtol` below 4ε of `T`); [`Error::Unstable`] when a fixed step diverges.
+/// meet the tolerance (also for `rtol` below 4ε of `T`); [`Error::Unstable`] when a fixed step diverges (grows faster than the dynamics allow).
 pub fn fly<T: Real>(
     ball: &Ball<T>,
     launch: &BallMotion<T>,
