@@ -41,13 +41,11 @@ pub struct ClubSpec<T: Real> {
 
 impl<T: Real> ClubSpec<T> {
     /// The driver of PHYSICS.md (measured Ping i15 head) with the seed's rolling contact:
-    /// the model the golden files pin. (The `driver` preset, [`PRESETS`]`[0]`, has the same
-    /// head with the calibrated contact.)
+    /// the model the golden files pin ([`crate::presets::SEED_DRIVER`]). (The `driver`
+    /// preset, [`PRESETS`]`[0]`, is a modern head with the calibrated contact.)
     #[must_use]
     pub fn driver() -> Self {
-        let mut spec = PRESETS[0].spec();
-        spec.contact = ContactLaw::Rolling;
-        spec
+        crate::presets::SEED_DRIVER.spec()
     }
 
     /// Validates every parameter and precomputes what the solvers need.
