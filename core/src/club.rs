@@ -41,11 +41,13 @@ pub struct ClubSpec<T: Real> {
 
 impl<T: Real> ClubSpec<T> {
     /// The driver of PHYSICS.md (measured Ping i15 head) with the seed's rolling contact:
-    /// the model the golden files pin ([`crate::presets::SEED_DRIVER`]). (The `driver`
+    /// the model the golden files pin ([`crate::presets::REFERENCE_DRIVER`]). (The `driver`
     /// preset, [`PRESETS`]`[0]`, is a modern head with the calibrated contact.)
     #[must_use]
     pub fn driver() -> Self {
-        crate::presets::SEED_DRIVER.spec()
+        let mut spec = crate::presets::REFERENCE_DRIVER.spec();
+        spec.contact = ContactLaw::Rolling;
+        spec
     }
 
     /// Validates every parameter and precomputes what the solvers need.

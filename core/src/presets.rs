@@ -114,13 +114,14 @@ pub struct Preset {
     pub typical: TypicalDelivery,
 }
 
-/// The measured driver head of PHYSICS.md (Ping i15) with the seed's rolling contact: the
-/// club the golden files pin ([`crate::ClubSpec::driver`]). Not in [`PRESETS`]: the
-/// `driver` preset is a modern head (docs/impact.md).
-pub const SEED_DRIVER: Preset = Preset {
-    name: "driver-seed",
+/// The measured driver head of PHYSICS.md (Ping i15): the reference club of the CLI and
+/// the C API when no club is named (with the calibrated contact), and, with the seed's
+/// rolling contact, the club the golden files pin ([`crate::ClubSpec::driver`]). Not in
+/// [`PRESETS`] (no name finds it): the `driver` preset is a modern head (docs/impact.md).
+pub const REFERENCE_DRIVER: Preset = Preset {
+    name: "driver",
     aliases: &[],
-    source: "Ping i15 driver head, measured (Petersen & McPhee); PHYSICS.md defaults (CG at face-centre height as measured), the seed's rolling contact: what the golden files pin",
+    source: "Ping i15 driver head, measured (Petersen & McPhee); PHYSICS.md defaults (CG at face-centre height as measured); the reference club when none is named",
     mass_kg: 0.2,
     inertia_kgm2: [3.000000e-04, 4.200000e-04, 2.200000e-04],
     loft_deg: 10.5,
@@ -128,7 +129,7 @@ pub const SEED_DRIVER: Preset = Preset {
     bulge_radius_m: 0.30,
     cg_to_face_m: [0.04, 0.0, 0.0],
     restitution: 0.83,
-    contact: ContactLaw::Rolling,
+    contact: FITTED_CONTACT,
     typical: TypicalDelivery {
         club_speed_mps: 115.0 * MPS_PER_MPH,
         attack_angle_deg: -0.9,
@@ -459,13 +460,15 @@ mod tests {
     }
 
     #[test]
-    fn seed_driver_is_the_measured_head() {
-        let d = SEED_DRIVER;
+    fn reference_driver_is_the_measured_head() {
+        let d = REFERENCE_DRIVER;
         assert_eq!(d.mass_kg, 0.200);
         assert_eq!(d.inertia_kgm2, [3.0e-4, 4.2e-4, 2.2e-4]);
         assert_eq!(d.cg_to_face_m, [0.040, 0.0, 0.0]);
         assert_eq!(d.restitution, 0.83);
-        assert_eq!(d.spec::<f64>(), ClubSpec::<f64>::driver());
+        let mut seed = d.spec::<f64>();
+        seed.contact = ContactLaw::Rolling;
+        assert_eq!(seed, ClubSpec::<f64>::driver());
         // the driver preset: the same head but for a modern inertia and the fitted contact
         let p = PRESETS[0];
         assert_eq!(p.name, "driver");

@@ -14,7 +14,8 @@ use carry_core::{DeliveryConvention, PRESETS, Preset};
 /// Club head: a preset and any overrides.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ClubParams {
-    /// The preset the overrides start from.
+    /// The preset the overrides start from (unnamed: PHYSICS.md's reference driver,
+    /// [`carry_core::presets::REFERENCE_DRIVER`]).
     pub preset: &'static Preset,
     /// Head mass (kg).
     pub mass_kg: Option<f64>,
@@ -160,7 +161,7 @@ impl Default for Params {
     fn default() -> Self {
         Self {
             club: ClubParams {
-                preset: &PRESETS[0],
+                preset: &carry_core::presets::REFERENCE_DRIVER,
                 mass_kg: None,
                 inertia_kgm2: None,
                 loft_deg: None,
