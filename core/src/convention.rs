@@ -157,7 +157,8 @@ fn solve<T: Real>(m: &Vector3<T>, t: &Vector3<T>) -> Result<(T, T)> {
     }
     let lift = s.asin();
     let theta = lift - m.y.atan2(m.x);
-    let phi = t.z.atan2(t.x) - m.z.atan2(rho * lift.cos());
+    // cos(asin s) = √(1 − s²) on the principal branch (libm's f32 `cos` runs in f64)
+    let phi = t.z.atan2(t.x) - m.z.atan2(rho * (T::one() - s * s).sqrt());
     if !(theta.is_finite() && phi.is_finite()) {
         return Err(Error::invalid(Field::DynamicLoft, Reason::OutOfRange));
     }
