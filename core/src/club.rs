@@ -41,11 +41,11 @@ pub struct ClubSpec<T: Real> {
 
 impl<T: Real> ClubSpec<T> {
     /// The driver of PHYSICS.md (measured Ping i15 head) with the seed's rolling contact:
-    /// the model the golden files pin. (The `driver` preset, [`PRESETS`]`[0]`, has the same
-    /// head with the calibrated contact.)
+    /// the model the golden files pin ([`crate::presets::REFERENCE_DRIVER`]). (The `driver`
+    /// preset, [`PRESETS`]`[0]`, is a modern head with the calibrated contact.)
     #[must_use]
     pub fn driver() -> Self {
-        let mut spec = PRESETS[0].spec();
+        let mut spec = crate::presets::REFERENCE_DRIVER.spec();
         spec.contact = ContactLaw::Rolling;
         spec
     }

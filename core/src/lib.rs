@@ -25,6 +25,7 @@
 pub mod ball;
 pub mod club;
 pub mod contact;
+pub mod convention;
 pub mod delivery;
 pub mod error;
 pub mod face;
@@ -55,6 +56,7 @@ pub use wind::Wind;
 
 pub use ball::{Ball, BallMotion};
 pub use club::{ClubHead, ClubSpec, ContactLaw, PRESETS, Preset};
+pub use convention::DeliveryConvention;
 pub use delivery::{ClubMotion, Delivery, FaceLocation, Strike};
 pub use error::{Error, Field, Reason, Result};
 pub use impact::{ImpactOutcome, Solver};

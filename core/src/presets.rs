@@ -13,7 +13,9 @@
 //! calibrated model launches the ball at TrackMan's average launch angle for that club
 //! (`docs/impact.md`, "Typical deliveries").
 
-use crate::club::{ClubSpec, FaceShape};
+use crate::club::ClubSpec;
+use crate::convention::DeliveryConvention;
+use crate::delivery::{Delivery, FaceLocation};
 use crate::impact::contact_law::{CompliantContact, ContactLaw};
 use crate::real::{Real, lit};
 use crate::units::{MPS_PER_MPH, deg};
@@ -47,17 +49,28 @@ pub struct TypicalDelivery {
 /// (published CG heights of cavity-back irons are 17–20 mm).
 pub const IRON_FACE_CENTRE_HEIGHT_M: f64 = 0.020;
 
-/// How far the face normal at `height_m` up the face tilts back from the face centre's (rad):
-/// `tan γ = (a/b²)·ΔY / s`, `s² = 1 − ΔY²/b²` (PHYSICS.md's face angles; 0 on a flat face,
-/// 0 when off the face). TrackMan's dynamic loft is the face's at the contact point, so the
-/// club's orientation is that loft minus γ.
-#[must_use]
-pub fn roll_tilt_rad<T: Real>(face: &FaceShape<T>, height_m: T) -> T {
-    let s2 = T::one() - height_m * height_m * face.inv_roll_sq;
-    if s2 > T::zero() {
-        (face.depth_over_roll_sq * height_m / s2.sqrt()).atan()
-    } else {
-        T::zero()
+/// The convention of every [`TypicalDelivery`]: TrackMan's (dynamic loft at the contact
+/// point).
+pub const TYPICAL_CONVENTION: DeliveryConvention = DeliveryConvention::TrackMan;
+
+impl TypicalDelivery {
+    /// This delivery in precision `T`, in [`TYPICAL_CONVENTION`]: square face and path, no
+    /// lie, no club spin, struck [`TypicalDelivery::impact_height_m`] up the face.
+    #[must_use]
+    pub fn delivery<T: Real>(&self) -> Delivery<T> {
+        Delivery {
+            club_speed_mps: lit(self.club_speed_mps),
+            attack_angle_rad: deg(lit(self.attack_angle_deg)),
+            club_path_rad: T::zero(),
+            face_angle_rad: T::zero(),
+            dynamic_loft_rad: deg(lit(self.dynamic_loft_deg)),
+            lie_rad: T::zero(),
+            club_spin_radps: Vector3::zeros(),
+            location: FaceLocation {
+                height_m: lit(self.impact_height_m),
+                toe_m: T::zero(),
+            },
+        }
     }
 }
 
@@ -101,14 +114,38 @@ pub struct Preset {
     pub typical: TypicalDelivery,
 }
 
+/// The measured driver head of PHYSICS.md (Ping i15): the reference club of the CLI and
+/// the C API when no club is named (with the calibrated contact), and, with the seed's
+/// rolling contact, the club the golden files pin ([`crate::ClubSpec::driver`]). Not in
+/// [`PRESETS`] (no name finds it): the `driver` preset is a modern head (docs/impact.md).
+pub const REFERENCE_DRIVER: Preset = Preset {
+    name: "driver",
+    aliases: &[],
+    source: "Ping i15 driver head, measured (Petersen & McPhee); PHYSICS.md defaults (CG at face-centre height as measured); the reference club when none is named",
+    mass_kg: 0.2,
+    inertia_kgm2: [3.000000e-04, 4.200000e-04, 2.200000e-04],
+    loft_deg: 10.5,
+    roll_radius_m: 0.30,
+    bulge_radius_m: 0.30,
+    cg_to_face_m: [0.04, 0.0, 0.0],
+    restitution: 0.83,
+    contact: FITTED_CONTACT,
+    typical: TypicalDelivery {
+        club_speed_mps: 115.0 * MPS_PER_MPH,
+        attack_angle_deg: -0.9,
+        dynamic_loft_deg: 12.8,
+        impact_height_m: 0.003,
+    },
+};
+
 /// The built-in club presets, longest club first.
 pub const PRESETS: [Preset; 13] = [
     Preset {
         name: "driver",
         aliases: &[],
-        source: "Ping i15 driver head, measured (Petersen & McPhee); PHYSICS.md defaults (CG at face-centre height as measured)",
+        source: "modern 460 cc driver: the measured Ping i15 head of PHYSICS.md (200 g, CG 40 mm behind the face centre at its height, bulge and roll 0.30 m = 11.8 in, COR 0.83) with a modern head's inertia: heel-toe (Iyy) 4,800 g cm2 (460 cc heads 4,500-5,200), vertical (Izz) 3,200 g cm2 (2/3 of heel-toe, Tutelman's range 1/2-2/3), Ixx scaled with Iyy from the i15 (3,400)",
         mass_kg: 0.2,
-        inertia_kgm2: [3.000000e-04, 4.200000e-04, 2.200000e-04],
+        inertia_kgm2: [3.400000e-04, 4.800000e-04, 3.200000e-04],
         loft_deg: 10.5,
         roll_radius_m: 0.30,
         bulge_radius_m: 0.30,
@@ -119,7 +156,7 @@ pub const PRESETS: [Preset; 13] = [
             club_speed_mps: 115.0 * MPS_PER_MPH,
             attack_angle_deg: -0.9,
             dynamic_loft_deg: 12.8,
-            impact_height_m: 0.003,
+            impact_height_m: 0.007,
         },
     },
     Preset {
@@ -353,6 +390,18 @@ pub const PRESETS: [Preset; 13] = [
 ];
 
 impl Preset {
+    /// Where this club typically meets the ball, up the face from its centre (m), at dynamic
+    /// loft `dynamic_loft_rad`: the typical strike height for a curved face (woods, teed or
+    /// swept), [`turf_impact_height_m`] for a flat face (irons and wedges off firm turf).
+    #[must_use]
+    pub fn strike_height_m(&self, dynamic_loft_rad: f64, ball_radius_m: f64) -> f64 {
+        if self.roll_radius_m.is_finite() {
+            self.typical.impact_height_m
+        } else {
+            turf_impact_height_m(dynamic_loft_rad, ball_radius_m)
+        }
+    }
+
     /// Looks a preset up by name or alias.
     #[must_use]
     pub fn find(name: &str) -> Option<&'static Preset> {
@@ -410,27 +459,9 @@ mod tests {
         }
     }
 
-    /// With a = b the tilt is asin(ΔY/b): the normal of a sphere.
     #[test]
-    fn roll_tilt_is_the_normals_angle() {
-        let Ok(club) = PRESETS[0].spec::<f64>().validate() else {
-            panic!("driver")
-        };
-        for h in [-0.01, 0.0, 0.003, 0.02] {
-            let want = (h / 0.30_f64).asin();
-            assert!((roll_tilt_rad(club.face(), h) - want).abs() < 1e-15, "{h}");
-        }
-        assert_eq!(roll_tilt_rad(club.face(), 0.5), 0.0);
-        let Ok(iron) = PRESETS[6].spec::<f32>().validate() else {
-            panic!("7iron")
-        };
-        assert_eq!(roll_tilt_rad(iron.face(), -0.007_f32), 0.0);
-    }
-
-    #[test]
-    fn driver_preset_keeps_the_measured_head() {
-        let d = PRESETS[0];
-        assert_eq!(d.name, "driver");
+    fn reference_driver_is_the_measured_head() {
+        let d = REFERENCE_DRIVER;
         assert_eq!(d.mass_kg, 0.200);
         assert_eq!(d.inertia_kgm2, [3.0e-4, 4.2e-4, 2.2e-4]);
         assert_eq!(d.cg_to_face_m, [0.040, 0.0, 0.0]);
@@ -438,5 +469,13 @@ mod tests {
         let mut seed = d.spec::<f64>();
         seed.contact = ContactLaw::Rolling;
         assert_eq!(seed, ClubSpec::<f64>::driver());
+        // the driver preset: the same head but for a modern inertia and the fitted contact
+        let p = PRESETS[0];
+        assert_eq!(p.name, "driver");
+        assert_eq!(
+            (p.mass_kg, p.cg_to_face_m, p.loft_deg, p.roll_radius_m),
+            (d.mass_kg, d.cg_to_face_m, d.loft_deg, d.roll_radius_m)
+        );
+        assert!(p.inertia_kgm2[1] >= 4.5e-4 && p.inertia_kgm2[1] <= 5.2e-4);
     }
 }

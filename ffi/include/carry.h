@@ -21,6 +21,14 @@
 // Default trajectory sample interval (s).
 #define CARRY_DEFAULT_RECORD_INTERVAL_S 0.1
 
+// `CarryDelivery::convention`: face angle and dynamic loft at the face centre (the seed's,
+// PHYSICS.md; what the golden files pin). Zero, so a zeroed struct reads angles as before.
+#define CARRY_CONVENTION_SEED_CENTRE 0
+
+// `CarryDelivery::convention`: face angle and dynamic loft at the contact point, club
+// speed, attack and path at the head's CG (TrackMan's; the defaults' and the CLI's).
+#define CARRY_CONVENTION_TRACKMAN 1
+
 // `CarryScene::aero`: the calibrated default model, fitted to TrackMan's 2023 tour data.
 #define CARRY_AERO_TOUR2023 0
 
@@ -213,6 +221,9 @@ typedef struct CarryDelivery_f32 {
   float impact_height_m;
   // Impact location toward the toe (m).
   float impact_toe_m;
+  // Where face angle and dynamic loft are read: `CARRY_CONVENTION_TRACKMAN` (at the
+  // contact point; the defaults) or `CARRY_CONVENTION_SEED_CENTRE` (at the face centre).
+  uint32_t convention;
 } CarryDelivery_f32;
 
 // A club delivery in single precision.
@@ -238,6 +249,9 @@ typedef struct CarryDelivery_f64 {
   double impact_height_m;
   // Impact location toward the toe (m).
   double impact_toe_m;
+  // Where face angle and dynamic loft are read: `CARRY_CONVENTION_TRACKMAN` (at the
+  // contact point; the defaults) or `CARRY_CONVENTION_SEED_CENTRE` (at the face centre).
+  uint32_t convention;
 } CarryDelivery_f64;
 
 // A club delivery in double precision.

@@ -186,8 +186,9 @@ pub unsafe fn preset_named(name: *const c_char) -> Result<&'static Preset> {
     Preset::find(name).ok_or(CARRY_ERR_UNKNOWN_NAME)
 }
 
-/// The club of the CLI's default (the `driver` preset, calibrated compliant contact).
+/// The club of the CLI's default (PHYSICS.md's reference driver head, calibrated compliant
+/// contact: `carry_core::presets::REFERENCE_DRIVER`).
 #[must_use]
 pub fn default_club<T: Real>() -> CarryClub<T> {
-    CarryClub::from_spec(&PRESETS[0].spec())
+    CarryClub::from_spec(&carry_core::presets::REFERENCE_DRIVER.spec())
 }

@@ -1,14 +1,21 @@
 //! Impact: club delivery → ball launch.
 
 use crate::club::{CarryBall, CarryClub};
-use crate::error::Result;
+use crate::error::{CARRY_ERR_UNKNOWN_OPTION, Result};
 use crate::settings::CarrySettings;
 use carry_core::impact::{self, ImpactOutcome};
-use carry_core::presets::{Preset, roll_tilt_rad};
+use carry_core::presets::Preset;
 use carry_core::real::{Real, lit};
-use carry_core::units::deg;
-use carry_core::{Delivery, FaceLocation};
+use carry_core::{Delivery, DeliveryConvention, FaceLocation, Strike};
 use nalgebra::Vector3;
+
+/// `CarryDelivery::convention`: face angle and dynamic loft at the face centre (the seed's,
+/// PHYSICS.md; what the golden files pin). Zero, so a zeroed struct reads angles as before.
+pub const CARRY_CONVENTION_SEED_CENTRE: u32 = 0;
+
+/// `CarryDelivery::convention`: face angle and dynamic loft at the contact point, club
+/// speed, attack and path at the head's CG (TrackMan's; the defaults' and the CLI's).
+pub const CARRY_CONVENTION_TRACKMAN: u32 = 1;
 
 /// How the club arrives at the ball, in launch-monitor terms (m/s, rad, rad/s, m).
 #[repr(C)]
@@ -32,6 +39,9 @@ pub struct CarryDelivery<T> {
     pub impact_height_m: T,
     /// Impact location toward the toe (m).
     pub impact_toe_m: T,
+    /// Where face angle and dynamic loft are read: `CARRY_CONVENTION_TRACKMAN` (at the
+    /// contact point; the defaults) or `CARRY_CONVENTION_SEED_CENTRE` (at the face centre).
+    pub convention: u32,
 }
 
 /// What an impact needs. Start from `carry_impact_input_default_*`.
@@ -99,8 +109,28 @@ impl<T: Real> CarryDelivery<T> {
         }
     }
 
+    /// The delivery convention.
+    ///
+    /// # Errors
+    /// `CARRY_ERR_UNKNOWN_OPTION` for an unknown `convention`.
+    pub fn convention(&self) -> Result<DeliveryConvention> {
+        match self.convention {
+            CARRY_CONVENTION_SEED_CENTRE => Ok(DeliveryConvention::SeedCentre),
+            CARRY_CONVENTION_TRACKMAN => Ok(DeliveryConvention::TrackMan),
+            _ => Err(CARRY_ERR_UNKNOWN_OPTION),
+        }
+    }
+
+    /// The core strike of this delivery on `club`, read in its convention.
+    ///
+    /// # Errors
+    /// `CARRY_ERR_UNKNOWN_OPTION`, or the core's errors.
+    pub fn strike(&self, club: &carry_core::ClubHead<T>) -> Result<Strike<T>> {
+        Ok(self.delivery().strike_in(club, self.convention()?)?)
+    }
+
     /// The CLI's default delivery for `club`: 45 m/s, square, centred, dynamic loft =
-    /// static loft.
+    /// static loft, TrackMan's convention.
     #[must_use]
     pub fn square(club: &CarryClub<T>) -> Self {
         Self {
@@ -113,26 +143,30 @@ impl<T: Real> CarryDelivery<T> {
             club_spin_radps: [T::zero(); 3],
             impact_height_m: T::zero(),
             impact_toe_m: T::zero(),
+            convention: CARRY_CONVENTION_TRACKMAN,
         }
     }
 
-    /// The typical tour delivery of `preset`, as the CLI's `--club NAME` fills it in:
-    /// club speed, attack angle, strike height, and the club's turn for TrackMan's
-    /// dynamic loft at the contact point.
+    /// The typical tour delivery of `preset`, as the CLI's `--club NAME` fills it in
+    /// (the core's [`carry_core::presets::TypicalDelivery::delivery`], TrackMan's
+    /// convention).
     #[must_use]
     pub fn typical(preset: &Preset) -> Self {
-        let t = &preset.typical;
-        let height = lit::<T>(t.impact_height_m);
-        let tilt = match preset.spec::<T>().validate() {
-            Ok(head) => roll_tilt_rad(head.face(), height),
-            Err(_) => T::zero(),
-        };
+        let d = preset.typical.delivery::<T>();
         Self {
-            club_speed_mps: lit(t.club_speed_mps),
-            attack_angle_rad: deg(lit(t.attack_angle_deg)),
-            dynamic_loft_rad: deg(lit::<T>(t.dynamic_loft_deg)) - tilt,
-            impact_height_m: height,
-            ..Self::square(&CarryClub::from_spec(&preset.spec()))
+            club_speed_mps: d.club_speed_mps,
+            attack_angle_rad: d.attack_angle_rad,
+            club_path_rad: d.club_path_rad,
+            face_angle_rad: d.face_angle_rad,
+            dynamic_loft_rad: d.dynamic_loft_rad,
+            lie_rad: d.lie_rad,
+            club_spin_radps: d.club_spin_radps.into(),
+            impact_height_m: d.location.height_m,
+            impact_toe_m: d.location.toe_m,
+            convention: match carry_core::presets::TYPICAL_CONVENTION {
+                DeliveryConvention::SeedCentre => CARRY_CONVENTION_SEED_CENTRE,
+                DeliveryConvention::TrackMan => CARRY_CONVENTION_TRACKMAN,
+            },
         }
     }
 }
@@ -161,7 +195,7 @@ impl<T: Real> CarryImpactResult<T> {
 }
 
 impl<T: Real> Default for CarryImpactInput<T> {
-    /// The CLI's `carry impact` defaults.
+    /// The CLI's `carry impact` defaults (TrackMan's convention).
     fn default() -> Self {
         let club = crate::club::default_club();
         Self {
@@ -182,7 +216,7 @@ pub fn run<T: Real>(input: &CarryImpactInput<T>) -> Result<CarryImpactResult<T>>
     let club = club.as_ref().map_err(|e| *e)?;
     let ball = input.ball.ball()?;
     let solver = input.settings.solver()?;
-    let strike = input.delivery.delivery().strike(club)?;
+    let strike = input.delivery.strike(club)?;
     let out = impact::solve(club, &ball, &strike, solver)?;
     Ok(CarryImpactResult::from_outcome(&out))
 }

@@ -88,7 +88,7 @@ pub fn run_with<T: Real>(
     let scene = scene.as_ref().map_err(|e| *e)?;
     let solver = input.settings.solver()?;
     let integrator = input.settings.integrator()?;
-    let strike = input.delivery.delivery().strike(club)?;
+    let strike = input.delivery.strike(club)?;
     // Borrowed from the `Result`s, not moved out: the outcomes are large, and each move is
     // a copy on the target (docs/ffi.md, "Cost").
     let hit = impact::solve(club, &ball, &strike, solver);

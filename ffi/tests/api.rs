@@ -438,7 +438,7 @@ proptest::proptest! {
             impact_height_m: height, ..i.delivery
         };
         let core = i.club.spec().and_then(|s| Ok(s.validate()?)).and_then(|club| {
-            let strike = i.delivery.delivery().strike(&club)?;
+            let strike = i.delivery.delivery().strike_in(&club, carry_core::DeliveryConvention::TrackMan)?;
             Ok(carry_core::impact::solve(&club, &Ball::standard(), &strike, carry_core::Solver::Reduced)?)
         });
         let mut out = zeroed::<CarryImpactResultF64>();
@@ -451,4 +451,42 @@ proptest::proptest! {
             Err(e) => proptest::prop_assert_eq!(code, e),
         }
     }
+}
+
+/// `CarryDelivery::convention`: the defaults read TrackMan's angles at the contact point, the
+/// seed's reading is the core's `Delivery::strike`, and an unknown value is a typed error.
+#[test]
+fn delivery_convention_is_selectable() {
+    let mut i = CarryImpactInputF64::default();
+    assert_eq!(
+        i.delivery.convention,
+        carry_ffi::impact::CARRY_CONVENTION_TRACKMAN
+    );
+    i.delivery.impact_toe_m = 0.02;
+    i.delivery.impact_height_m = 0.01;
+    let mut tm = zeroed::<CarryImpactResultF64>();
+    assert_eq!(f64::impact(&i, &mut tm), CARRY_OK);
+    i.delivery.convention = carry_ffi::impact::CARRY_CONVENTION_SEED_CENTRE;
+    let mut seed = zeroed::<CarryImpactResultF64>();
+    assert_eq!(f64::impact(&i, &mut seed), CARRY_OK);
+    let Ok(club) = i.club.spec().and_then(|s| Ok(s.validate()?)) else {
+        panic!("club")
+    };
+    let Ok(core) = i.delivery.delivery().strike(&club).and_then(|s| {
+        carry_core::impact::solve(&club, &Ball::standard(), &s, carry_core::Solver::Reduced)
+    }) else {
+        panic!("core")
+    };
+    same_bits(
+        "seed",
+        &golden::impact_outputs(&seed),
+        &golden::impact_outputs(&CarryImpactResult::from_outcome(&core)),
+    );
+    // the toe's bulge no longer starts the ball right when the face is square there
+    assert!(tm.launch_direction_rad.abs() < seed.launch_direction_rad.abs());
+    i.delivery.convention = 7;
+    assert_eq!(
+        f64::impact(&i, &mut seed),
+        carry_ffi::error::CarryError::CARRY_ERR_UNKNOWN_OPTION
+    );
 }

@@ -1,13 +1,16 @@
-//! Fuzz the impact entry points: club validation, ball, delivery → strike or a strike given
+//! Fuzz the impact entry points: club validation, ball, delivery → strike (in the seed's or
+//! TrackMan's convention, whose conversion and its inverse are fuzzed too) or a strike given
 //! directly, both solvers (every pivoting) and both contact laws (the compliant one with
 //! any parameters, valid or not) in f32 and f64. A success must be finite.
 #![no_main]
 
+use carry_core::convention::{FaceAim, at_contact_point, centre_aim};
 use carry_core::impact::{self, CompliantContact, ContactLaw, Solver};
 use carry_core::linalg::Pivoting;
 use carry_core::real::lit;
 use carry_core::{
-    Ball, BallMotion, ClubMotion, ClubSpec, Delivery, FaceLocation, Real, Result, Strike,
+    Ball, BallMotion, ClubMotion, ClubSpec, Delivery, DeliveryConvention, FaceLocation, Real,
+    Result, Strike,
 };
 use carry_fuzz::Bytes;
 use libfuzzer_sys::fuzz_target;
@@ -95,7 +98,7 @@ fn run<T: Real>(b: &mut Bytes<'_>) -> Result<()> {
             },
         )?
     } else {
-        Delivery::<T> {
+        let delivery = Delivery::<T> {
             club_speed_mps: lit(b.param(0.0, 150.0)),
             attack_angle_rad: lit(b.param(-1.6, 1.6)),
             club_path_rad: lit(b.param(-1.6, 1.6)),
@@ -107,8 +110,27 @@ fn run<T: Real>(b: &mut Bytes<'_>) -> Result<()> {
                 height_m: lit(b.param(-0.04, 0.04)),
                 toe_m: lit(b.param(-0.05, 0.05)),
             },
+        };
+        // either convention; TrackMan's derives the centre orientation (convention.rs),
+        // whose inverse must give the angles back where it succeeds
+        if b.flag() {
+            let convention = DeliveryConvention::TrackMan;
+            let aim = FaceAim {
+                dynamic_loft_rad: delivery.dynamic_loft_rad,
+                face_angle_rad: delivery.face_angle_rad,
+            };
+            if let Ok(centre) = centre_aim(&club, &delivery.location, delivery.lie_rad, &aim) {
+                assert!(centre.dynamic_loft_rad.is_finite() && centre.face_angle_rad.is_finite());
+                if let Ok(back) =
+                    at_contact_point(&club, &delivery.location, delivery.lie_rad, &centre)
+                {
+                    assert!(back.dynamic_loft_rad.is_finite() && back.face_angle_rad.is_finite());
+                }
+            }
+            delivery.strike_in(&club, convention)?
+        } else {
+            delivery.strike(&club)?
         }
-        .strike(&club)?
     };
     let solver = match b.byte() % 4 {
         0 => Solver::Reduced,

@@ -7,8 +7,8 @@ use crate::params::{
     Key, Params, Value, parse_finite, parse_preset, parse_radius, parse_tensor, parse_vec3,
 };
 use crate::units::Units;
-use carry_core::Preset;
 use carry_core::impact::ContactLaw;
+use carry_core::{DeliveryConvention, Preset};
 use clap::{Args, Parser, Subcommand};
 use std::path::PathBuf;
 
@@ -95,6 +95,9 @@ fn tensor(s: &str) -> Result<[f64; 9], String> {
 fn preset(s: &str) -> Result<&'static Preset, String> {
     parse_preset(s)
 }
+fn convention(s: &str) -> Result<DeliveryConvention, String> {
+    crate::params::parse_convention(s)
+}
 fn contact(s: &str) -> Result<ContactLaw<f64>, String> {
     crate::contact::parse(s)
 }
@@ -112,11 +115,12 @@ pub struct DeliveryArgs {
     /// Club path [deg, + right: in-to-out] (default 0).
     #[arg(long, value_name = "DEG", value_parser = finite, allow_hyphen_values = true)]
     pub club_path: Option<f64>,
-    /// Face angle [deg, + open: pointing right] (default 0).
+    /// Face angle [deg, + open: pointing right] (default 0); at the contact point
+    /// (`--convention trackman`, the default) or at the face centre (`seed`).
     #[arg(long, value_name = "DEG", value_parser = finite, allow_hyphen_values = true)]
     pub face_angle: Option<f64>,
-    /// Dynamic loft [deg]: the club's orientation (default: the static loft, or the named
-    /// club's typical, TrackMan's at the contact point).
+    /// Dynamic loft [deg] (default: the static loft, or the named club's typical); at the
+    /// contact point (`--convention trackman`, the default) or at the face centre (`seed`).
     #[arg(long, value_name = "DEG", value_parser = finite, allow_hyphen_values = true)]
     pub dynamic_loft: Option<f64>,
     /// Lie / face tilt [deg, + toe up] (default 0).
@@ -135,6 +139,12 @@ pub struct DeliveryArgs {
     /// Coefficient of restitution, 0..1 (default: the club's, 0.83 for the driver).
     #[arg(long, value_name = "E", value_parser = finite, allow_hyphen_values = true)]
     pub cor: Option<f64>,
+    /// Where face angle and dynamic loft are read: `trackman` (default: at the contact
+    /// point, as a launch monitor reports them; club speed, attack and path at the head's
+    /// CG) or `seed` (at the face centre: the club's own orientation, PHYSICS.md's; what
+    /// the golden files pin). The same for a centre strike or a flat face.
+    #[arg(long, value_name = "trackman|seed", value_parser = convention)]
+    pub convention: Option<DeliveryConvention>,
 }
 
 /// Club head and ball options.
@@ -556,6 +566,9 @@ impl DeliveryArgs {
         put(p, u, Key::ImpactHeight, self.impact_height);
         put(p, u, Key::ImpactToe, self.impact_toe);
         put(p, u, Key::Cor, self.cor);
+        if let Some(c) = self.convention {
+            Key::Convention.set(p, u, Value::Convention(c));
+        }
     }
 }
 

@@ -6,7 +6,6 @@ use crate::params::{ClubParams, DEFAULT_BACKSPIN_RPM, Params};
 use crate::report::{ClubAfter, FlightReport, GroundReport, LaunchReport, Report};
 use carry_core::flight::{Integrator, Recorder, Sample};
 use carry_core::impact::{self, Solver};
-use carry_core::presets::roll_tilt_rad;
 use carry_core::real::{lit, to_f64};
 use carry_core::units::{deg, rpm, to_deg, to_rpm};
 use carry_core::{
@@ -209,20 +208,12 @@ pub fn attack_angle_deg(p: &Params) -> f64 {
         .unwrap_or(0.0)
 }
 
-/// The club's dynamic loft (rad): given, else the named club's typical one (TrackMan's,
-/// at the contact point: the club turns by the face normal's tilt there less), else the
-/// static loft.
-fn dynamic_loft_rad<T: Real>(p: &Params, head: &ClubHead<T>) -> T {
-    if let Some(a) = p.delivery.dynamic_loft_deg {
-        return deg(lit(a));
-    }
-    match typical(p) {
-        Some(t) => {
-            let h = lit::<T>(impact_height_m(p));
-            deg(lit::<T>(t.dynamic_loft_deg)) - roll_tilt_rad(head.face(), h)
-        }
-        None => head.loft_rad(),
-    }
+/// Dynamic loft (deg): given, else the named club's typical one, else the static loft
+/// (`None`). Read in the delivery's convention, like the face angle.
+fn dynamic_loft_deg(p: &Params) -> Option<f64> {
+    p.delivery
+        .dynamic_loft_deg
+        .or_else(|| typical(p).map(|t| t.dynamic_loft_deg))
 }
 
 /// The ball of `p`, validated.
@@ -233,8 +224,10 @@ pub fn ball<T: Real>(p: &Params) -> Result<Ball<T>, InputError> {
     Ball::new(lit(p.ball_mass_kg), lit(p.ball_radius_m)).map_err(InputError::from)
 }
 
-/// The core delivery of `p` for `head` (degrees → radians; what is not given comes from
-/// the named club's typical delivery, else the reference delivery).
+/// The core delivery of `p` for `head`, as the user gave it (degrees → radians; what is not
+/// given comes from the named club's typical delivery, else the reference delivery), in
+/// `p`'s convention: turn it into the seed's reading with
+/// [`Delivery::in_seed_convention`] (as [`strike_delivery`] does).
 #[must_use]
 pub fn delivery<T: Real>(p: &Params, head: &ClubHead<T>) -> Delivery<T> {
     let d = &p.delivery;
@@ -243,7 +236,7 @@ pub fn delivery<T: Real>(p: &Params, head: &ClubHead<T>) -> Delivery<T> {
         attack_angle_rad: deg(lit(attack_angle_deg(p))),
         club_path_rad: deg(lit(d.club_path_deg)),
         face_angle_rad: deg(lit(d.face_angle_deg)),
-        dynamic_loft_rad: dynamic_loft_rad(p, head),
+        dynamic_loft_rad: dynamic_loft_deg(p).map_or(head.loft_rad(), |a| deg(lit(a))),
         lie_rad: deg(lit(d.lie_deg)),
         club_spin_radps: v3(d.club_spin_radps),
         location: FaceLocation {
@@ -251,6 +244,15 @@ pub fn delivery<T: Real>(p: &Params, head: &ClubHead<T>) -> Delivery<T> {
             toe_m: lit(d.impact_toe_m),
         },
     }
+}
+
+/// The delivery of `p` in the seed's reading (the club's centre orientation derived from
+/// the angles at the contact point under `--convention trackman`).
+///
+/// # Errors
+/// The core's conversion errors (an off-face location, an unreachable loft).
+pub fn strike_delivery<T: Real>(p: &Params, head: &ClubHead<T>) -> Result<Delivery<T>, InputError> {
+    Ok(delivery(p, head).in_seed_convention(head, p.delivery.convention)?)
 }
 
 /// The impact of `p` in precision `T`.
@@ -261,8 +263,7 @@ fn solve_impact<T: Real>(
 ) -> Result<carry_core::ImpactOutcome<T>, InputError> {
     let head = club::<T>(&p.club)?;
     let d = &p.delivery;
-    let delivery = delivery::<T>(p, &head);
-    let strike = delivery.strike(&head)?;
+    let strike = strike_delivery::<T>(p, &head)?.strike(&head)?;
     impact::solve(&head, ball, &strike, n.solver()).map_err(|e| {
         if e == carry_core::Error::NoApproach
             && club_speed_mps(p) == 0.0

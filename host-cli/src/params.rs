@@ -9,12 +9,13 @@ use crate::ground::GroundSpec;
 use crate::units::{Quantity, Units};
 use carry_core::aero::AeroModel;
 use carry_core::impact::ContactLaw;
-use carry_core::{PRESETS, Preset};
+use carry_core::{DeliveryConvention, PRESETS, Preset};
 
 /// Club head: a preset and any overrides.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ClubParams {
-    /// The preset the overrides start from.
+    /// The preset the overrides start from (unnamed: PHYSICS.md's reference driver,
+    /// [`carry_core::presets::REFERENCE_DRIVER`]).
     pub preset: &'static Preset,
     /// Head mass (kg).
     pub mass_kg: Option<f64>,
@@ -62,6 +63,9 @@ pub struct DeliveryParams {
     pub impact_height_m: Option<f64>,
     /// Impact offset toward the toe (m).
     pub impact_toe_m: f64,
+    /// Where the face angle and dynamic loft are read: TrackMan's contact point (the
+    /// default) or the seed's face centre.
+    pub convention: DeliveryConvention,
 }
 
 /// A launch as a launch monitor reports it.
@@ -149,11 +153,15 @@ pub const DEFAULT_LAUNCH_ANGLE_DEG: f64 = 10.9;
 /// Default backspin (rpm).
 pub const DEFAULT_BACKSPIN_RPM: f64 = 2686.0;
 
+/// The delivery convention of the CLI, the batch files, Python and the C API: TrackMan's
+/// (face angle and dynamic loft at the contact point), what a launch-monitor user gives.
+pub const DEFAULT_CONVENTION: DeliveryConvention = DeliveryConvention::TrackMan;
+
 impl Default for Params {
     fn default() -> Self {
         Self {
             club: ClubParams {
-                preset: &PRESETS[0],
+                preset: &carry_core::presets::REFERENCE_DRIVER,
                 mass_kg: None,
                 inertia_kgm2: None,
                 loft_deg: None,
@@ -178,6 +186,7 @@ impl Default for Params {
                 club_spin_radps: [0.0; 3],
                 impact_height_m: None,
                 impact_toe_m: 0.0,
+                convention: DEFAULT_CONVENTION,
             },
             launch: LaunchParams {
                 ball_speed_mps: DEFAULT_BALL_SPEED_MPS,
@@ -214,6 +223,8 @@ pub enum Kind {
     Bool,
     /// A surface name or a ground file ([`crate::ground`]).
     Ground,
+    /// A delivery convention: `trackman` or `seed` ([`parse_convention`]).
+    Convention,
 }
 
 macro_rules! keys {
@@ -266,6 +277,7 @@ keys! {
     ImpactHeight = "impact_height", Number, Offset;
     ImpactToe = "impact_toe", Number, Offset;
     Cor = "cor", Number, Plain;
+    Convention = "convention", Convention, Plain;
     Club = "club", Preset, Plain;
     Contact = "contact", Contact, Plain;
     ClubMass = "club_mass", Number, Plain;
@@ -335,6 +347,8 @@ pub enum Value {
     Bool(bool),
     /// A ground (surface and options).
     Ground(GroundSpec),
+    /// A delivery convention.
+    Convention(DeliveryConvention),
 }
 
 impl Key {
@@ -369,6 +383,7 @@ impl Key {
                 .map_err(err),
             Kind::Bool => parse_bool(text).map(Value::Bool).map_err(err),
             Kind::Ground => crate::ground::parse(text).map(Value::Ground).map_err(err),
+            Kind::Convention => parse_convention(text).map(Value::Convention).map_err(err),
         }
     }
 
@@ -463,6 +478,7 @@ impl Key {
                 _ => {}
             },
             Value::Ground(g) => s.ground.merge(&g),
+            Value::Convention(convention) => d.convention = convention,
         }
     }
 }
@@ -557,6 +573,21 @@ pub fn parse_preset(text: &str) -> Result<&'static Preset, String> {
         let names: Vec<&str> = PRESETS.iter().map(|p| p.name).collect();
         format!("unknown club '{t}' (presets: {})", names.join(", "))
     })
+}
+
+/// A delivery convention: `trackman` (face angle and dynamic loft at the contact point)
+/// or `seed` (at the face centre: the seed's, which the golden files pin).
+///
+/// # Errors
+/// The reason, naming the choices.
+pub fn parse_convention(text: &str) -> Result<DeliveryConvention, String> {
+    match text.trim().to_ascii_lowercase().as_str() {
+        "trackman" | "contact" => Ok(DeliveryConvention::TrackMan),
+        "seed" | "centre" | "center" => Ok(DeliveryConvention::SeedCentre),
+        t => Err(format!(
+            "unknown convention '{t}' (trackman: angles at the contact point; seed: at the face centre)"
+        )),
+    }
 }
 
 /// A switch value.

@@ -236,6 +236,7 @@ pub fn load_file(path: &Path, units: Units, params: &mut Params) -> Result<(), I
                 Value::Ground(crate::ground::from_table(t).map_err(|e| bad(&e))?)
             }
             (Kind::Ground, _) => return Err(bad("must be a surface name or a table")),
+            (Kind::Convention, toml::Value::String(t)) => key.parse(t)?,
             (_, v) => Value::Number(number(v)?),
         };
         key.set(params, units, parsed);

@@ -6,7 +6,9 @@ use carry_core::flight::Integrator;
 use carry_core::real::{lit, to_f64};
 use carry_core::shot::{Fidelity, ShotOutcome, play};
 use carry_core::units::{to_deg, to_rpm};
-use carry_core::{Ball, ClubHead, Delivery, PreparedScene, Preset, Real, Scene};
+use carry_core::{
+    Ball, ClubHead, Delivery, DeliveryConvention, PreparedScene, Preset, Real, Scene,
+};
 use serde::Serialize;
 
 /// Everything a shot needs besides the delivery, plus the base delivery.
@@ -16,8 +18,11 @@ pub struct Setup<T: Real> {
     pub club: ClubHead<T>,
     /// The ball.
     pub ball: Ball<T>,
-    /// The base delivery (analyses vary some of its fields).
+    /// The base delivery (analyses vary some of its fields), read in `convention`.
     pub delivery: Delivery<T>,
+    /// Where the deliveries' face angle and dynamic loft are read (TrackMan's contact
+    /// point, or the seed's face centre); [`Setup::play`] derives the club's orientation.
+    pub convention: DeliveryConvention,
     /// The prepared scene.
     pub scene: PreparedScene<T>,
     /// Impact solver and flight integrator.
@@ -98,6 +103,7 @@ impl<T: Real> Setup<T> {
             club,
             ball,
             delivery: Delivery::square(lit(club_speed_mps), &club),
+            convention: DeliveryConvention::TrackMan,
             scene: Scene::default().prepare(&ball)?,
             fidelity: Fidelity::default(),
         })
@@ -116,7 +122,7 @@ impl<T: Real> Setup<T> {
         self
     }
 
-    /// Plays `delivery` in this setup.
+    /// Plays `delivery` (read in the setup's convention) in this setup.
     ///
     /// # Errors
     /// The core's errors for this delivery.
@@ -124,7 +130,7 @@ impl<T: Real> Setup<T> {
         play(
             &self.club,
             &self.ball,
-            delivery,
+            &delivery.in_seed_convention(&self.club, self.convention)?,
             &self.scene,
             &self.fidelity,
             None,

@@ -17,7 +17,8 @@ use carry_core::linalg::Pivoting;
 use carry_core::scene::{Effects, Scene};
 use carry_core::wind::Wind;
 use carry_core::{
-    Ball, BallMotion, ClubMotion, ClubSpec, Delivery, FaceLocation, Launch, Real, Strike,
+    Ball, BallMotion, ClubMotion, ClubSpec, Delivery, DeliveryConvention, FaceLocation, Launch,
+    Real, Strike,
 };
 use core::hint::black_box;
 use nalgebra::{Matrix3, Vector3};
@@ -119,7 +120,26 @@ fn impact_paths_with<T: Real>(law: ContactLaw<T>) -> T {
             toe_m: x(0.0),
         },
     );
-    let strikes = [delivery.strike(&head), direct];
+    // TrackMan's convention: the centre orientation derived from the contact point, and
+    // back (`convention::centre_aim` / `at_contact_point` through `strike_in`)
+    let convention = if black_box(true) {
+        DeliveryConvention::TrackMan
+    } else {
+        DeliveryConvention::SeedCentre
+    };
+    let aim = carry_core::convention::FaceAim {
+        dynamic_loft_rad: x(0.2),
+        face_angle_rad: x(0.01),
+    };
+    if let Ok(c) = carry_core::convention::at_contact_point(&head, &delivery.location, x(0.0), &aim)
+    {
+        acc += c.dynamic_loft_rad + c.face_angle_rad;
+    }
+    let strikes = [
+        delivery.strike(&head),
+        direct,
+        delivery.strike_in(&head, convention),
+    ];
     let solvers = [
         Solver::Reduced,
         Solver::Full(Pivoting::Equilibrated),

@@ -46,7 +46,7 @@ __all__ = [
 __version__ = "0.1.0"
 
 _NUMERIC = ("number", "radius")
-_TEXT = ("preset", "contact", "aero", "ground")
+_TEXT = ("preset", "contact", "aero", "ground", "convention")
 _INPUTS = {mode: dict(_carry.inputs(mode)) for mode in ("impact", "flight", "shot")}
 _ALL_NAMES = set().union(*_INPUTS.values())
 

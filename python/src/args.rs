@@ -76,6 +76,7 @@ pub fn kind_name(kind: Kind) -> &'static str {
         Kind::Aero => "aero",
         Kind::Bool => "bool",
         Kind::Ground => "ground",
+        Kind::Convention => "convention",
     }
 }
 

@@ -3,9 +3,8 @@
 //! of each row, for calibration and accuracy tests.
 
 use carry_core::impact::{self, ContactLaw, Solver};
-use carry_core::presets::{roll_tilt_rad, turf_impact_height_m};
 use carry_core::units::{deg, mph, to_deg, to_mph, to_rpm};
-use carry_core::{Ball, ClubSpec, Delivery, FaceLocation, Preset};
+use carry_core::{Ball, ClubSpec, Delivery, DeliveryConvention, FaceLocation, Preset};
 use nalgebra::Vector3;
 
 /// One row of the file (units of the source: mph, degrees, rpm).
@@ -86,15 +85,11 @@ impl Row {
 
     /// Where this row's ball meets the face (from its centre, m): the preset's typical
     /// strike for woods, a ball on firm turf for flat-faced clubs
-    /// ([`carry_core::presets::turf_impact_height_m`] at the row's dynamic loft).
+    /// ([`carry_core::Preset::strike_height_m`] at the row's dynamic loft).
     #[must_use]
     pub fn impact_height_m(&self) -> f64 {
-        let p = self.preset();
-        if p.roll_radius_m.is_finite() {
-            p.typical.impact_height_m
-        } else {
-            turf_impact_height_m(deg(self.dynamic_loft_deg), Ball::<f64>::STANDARD_RADIUS_M)
-        }
+        self.preset()
+            .strike_height_m(deg(self.dynamic_loft_deg), Ball::<f64>::STANDARD_RADIUS_M)
     }
 
     /// The model's launch for this row's delivery (square, struck where [`Row::impact_height_m`] says) with the row's preset
@@ -124,15 +119,13 @@ impl Row {
     /// Any core error.
     pub fn predict_at(&self, spec: &ClubSpec<f64>, h: f64) -> carry_core::Result<Predicted> {
         let club = spec.validate()?;
-        // TrackMan's dynamic loft is the face's at the contact point: on a face with roll
-        // the club turns by the normal's tilt there less
-        let roll_tilt = roll_tilt_rad(club.face(), h);
+        // TrackMan's dynamic loft is the face's at the contact point
         let d = Delivery {
             club_speed_mps: mph(self.club_speed_mph),
             attack_angle_rad: deg(self.attack_deg),
             club_path_rad: 0.0,
             face_angle_rad: 0.0,
-            dynamic_loft_rad: deg(self.dynamic_loft_deg) - roll_tilt,
+            dynamic_loft_rad: deg(self.dynamic_loft_deg),
             lie_rad: 0.0,
             club_spin_radps: Vector3::zeros(),
             location: FaceLocation {
@@ -140,7 +133,7 @@ impl Row {
                 toe_m: 0.0,
             },
         };
-        let strike = d.strike(&club)?;
+        let strike = d.strike_in(&club, DeliveryConvention::TrackMan)?;
         let out = impact::solve(&club, &Ball::standard(), &strike, Solver::Reduced)?;
         Ok(Predicted {
             ball_speed_mph: to_mph(out.launch.ball_speed_mps),

@@ -180,10 +180,11 @@ impl<T: Real> CompliantContact<T> {
         let u0_t = u0 + n * v_n;
         let slip = u0_t.norm();
         let e_t = self.tangential_restitution_at(slip / v_n);
-        // grip: target u* = e v_n n − e_t u⁰_t, scaled into the energy bound
+        // grip: target u* = e v_n n − e_t u⁰_t + (1 − g) c P_n, scaled into the energy bound
         let target = n * (e * v_n) - u0_t * e_t;
         let a = ldl.solve(&target)?;
         let b = ldl.solve(u0)?;
+        let (a, target) = self.with_gear_slip(k, &ldl, n, a, &b, target, e_t)?;
         let (target_energy, approach_energy) = (target.dot(&a), u0.dot(&b));
         let (lambda, bound) = if target_energy > approach_energy {
             ((approach_energy / target_energy).sqrt(), true)
@@ -230,6 +231,67 @@ impl<T: Real> CompliantContact<T> {
         };
         finite_impulse(q * p_n.max(zero), regime)
     }
+}
+
+impl<T: Real> CompliantContact<T> {
+    /// The grip target with the part of the gear effect the ball's tangential spring does
+    /// not pass on. `c = (I − n nᵀ) K n` is the tangential velocity of the club's contact
+    /// point relative to the ball's per unit normal impulse (the head turning about its
+    /// CG); the ball keeps the fraction `1 − g(e_t)` of `c P_n` as slip at separation:
+    ///
+    /// ```text
+    /// u* = e v_n n − e_t u⁰_t + (1 − g) c P_n,   P = K⁻¹u* − K⁻¹u⁰,   P_n = n·P
+    /// ⇒ P_n = n·(a − b) / (1 − (1 − g) n·K⁻¹c)     (a = K⁻¹(e v_n n − e_t u⁰_t), b = K⁻¹u⁰)
+    /// ```
+    /// with `n·K⁻¹c = 1 − (nᵀKn)(nᵀK⁻¹n) ≤ 0` (Cauchy–Schwarz), so the denominator is ≥ 1.
+    /// Returns `(K⁻¹u*, u*)`.
+    #[allow(clippy::too_many_arguments)]
+    fn with_gear_slip(
+        &self,
+        k: &Matrix3<T>,
+        ldl: &Ldl3<T>,
+        n: &Vector3<T>,
+        a: Vector3<T>,
+        b: &Vector3<T>,
+        target: Vector3<T>,
+        e_t: T,
+    ) -> Result<(Vector3<T>, Vector3<T>)> {
+        let keep = T::one() - gear_transmission(e_t);
+        if !(keep > T::zero()) {
+            return Ok((a, target));
+        }
+        let kn = k * n;
+        let c = kn - n * n.dot(&kn);
+        let d = ldl.solve(&c)?;
+        let p_n = n.dot(&(a - b)) / (T::one() - keep * n.dot(&d));
+        let slip = keep * p_n;
+        Ok((a + d * slip, target + c * slip))
+    }
+}
+
+/// The fraction `g` of the rigid gear effect a ball with tangential restitution `e_t`
+/// takes (`e_t` in [0, 1]; 1 at `e_t = 1`, 1/3 at `e_t = 0`).
+///
+/// A linear tangential spring at the contact (Cross, Am. J. Phys. 70 (2002) 1093;
+/// Maw, Barber & Fawcett, Wear 38 (1976) 101), natural frequency `ω_t`, under a half-sine
+/// normal force of frequency `ω_n = π/τ`, `r = ω_t/ω_n`. An initial slip `w₀` leaves as
+/// `w₀ cos πr`, so `e_t = −cos πr`; a slip forced by the head's rotation, `c J_n(t)`,
+/// leaves as `c P_n (1 + cos πr) / (2(1 − r²))`, the ball taking the rest:
+///
+/// ```text
+/// g = 1 − (1 + cos πr) / (2 (1 − r²)),   r = 1 − x,   x = acos(e_t)/π ∈ [0, ½]
+///   = 1 − (1 − e_t) / (2 x (2 − x))
+/// ```
+/// (the soft branch r ≤ 1; `r → ∞` is the rigid ball, g = 1; `r → 0` no gear effect).
+#[must_use]
+pub fn gear_transmission<T: Real>(e_t: T) -> T {
+    let e_t = clamp01(e_t);
+    let x = e_t.acos() / T::pi();
+    if !(x > lit(1e-4)) {
+        // 1 − e_t ≈ π²x²/2: g ≈ 1 − π²x/8
+        return T::one() - T::pi() * T::pi() * x * lit(0.125);
+    }
+    T::one() - (T::one() - e_t) / (lit::<T>(2.0) * x * (lit::<T>(2.0) - x))
 }
 
 /// A finite impulse, or [`Error::Singular`]: a matrix that is not a collision matrix

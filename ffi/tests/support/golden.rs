@@ -180,6 +180,7 @@ pub fn impact_input<T: Real>(c: &ImpactInput, solver: u32, compliant: bool) -> C
             club_spin_radps: d.club_spin_radps.into(),
             impact_height_m: d.location.height_m,
             impact_toe_m: d.location.toe_m,
+            convention: carry_ffi::impact::CARRY_CONVENTION_SEED_CENTRE,
         },
         settings: CarrySettings {
             solver,

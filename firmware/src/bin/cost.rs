@@ -11,7 +11,7 @@ use carry_core::impact::{self, Solver};
 use carry_core::linalg::Pivoting;
 use carry_core::real::{Real, lit, to_f64};
 use carry_core::scene::Scene;
-use carry_core::{Ball, Error};
+use carry_core::{Ball, DeliveryConvention, Error};
 use carry_firmware::cost::{Ticks, insns_per_call, region};
 use carry_firmware::shot;
 use core::hint::black_box;
@@ -85,6 +85,23 @@ fn suite<T: Real>(ticks: &Ticks, k: &mut u32, p: &str) {
         label!("delivery: Delivery::strike"),
         10,
         &mut || delivery.strike(&club).map(|_| (0, f64::NAN)),
+    );
+    // TrackMan's convention off the centre: the club's centre orientation derived from the
+    // angles at the contact point (carry_core::convention), then the strike
+    let mut located = delivery;
+    located.location.height_m = lit(0.01);
+    located.location.toe_m = lit(0.015);
+    let located = black_box(located);
+    op(
+        ticks,
+        k,
+        label!("delivery: strike_in TrackMan's convention, off-centre"),
+        10,
+        &mut || {
+            located
+                .strike_in(&club, DeliveryConvention::TrackMan)
+                .map(|_| (0, f64::NAN))
+        },
     );
     op(
         ticks,

@@ -68,6 +68,7 @@ pub fn setup<T: Real>(p: &Params, n: &Numerics) -> Result<Setup<T>, InputError> 
         club,
         ball,
         delivery: compute::delivery(p, &club),
+        convention: p.delivery.convention,
         scene,
         fidelity: Fidelity {
             solver: n.solver(),
