@@ -128,13 +128,17 @@ impl<T: Real> AeroModel<T> {
             },
             Self::Modern(c) => {
                 let per_speed = density * ball.diameter_m() / (viscosity * c.reynolds_critical);
+                let ratio = c.cl_low_saturation_spin / c.cl_saturation_spin;
                 PreparedAero {
                     forces: Forces::Modern {
                         drag_v: a * c.cd_supercritical,
                         crisis: Crisis::new(a * (c.cd_subcritical - c.cd_supercritical), per_speed),
                         drag_lift: a * c.cd_lift * c.cl_max,
                         lift_v: a * c.cl_max,
-                        saturation_per_spin: r / c.cl_saturation_spin,
+                        lift_low: a * c.cl_low,
+                        saturation_per_spin: r / c.cl_low_saturation_spin,
+                        ratio,
+                        ratio_sq: ratio * ratio,
                     },
                     decay: half_rho_area * r * ball.diameter_m() / ball.inertia_kgm2() * c.cm_spin,
                 }
@@ -175,8 +179,9 @@ pub(crate) enum Forces<T> {
         /// `A·c_l,sp·R` (1/rad).
         lift_s: T,
     },
-    /// With `x = S/S_sat` ([`ModernAero`]): `A·C_L·V = lift_v·saturation(x)·V`,
-    /// `A·C_D·V = (drag_v + A·(c_d,sub − c_d,super)·crisis + drag_lift·saturation(x))·V`.
+    /// With `x = S/S_sat`, `y = S/S_low` ([`ModernAero`]):
+    /// `A·C_L·V = (lift_v·sat(x) + lift_low·sat(y))·V`,
+    /// `A·C_D·V = (drag_v + A·(c_d,sub − c_d,super)·crisis + drag_lift·sat(x))·V`.
     Modern {
         /// `A·c_d,super` (1/m).
         drag_v: T,
@@ -186,8 +191,14 @@ pub(crate) enum Forces<T> {
         drag_lift: T,
         /// `A·c_l,max` (1/m).
         lift_v: T,
-        /// `R/S_sat` (m): `S/S_sat = saturation_per_spin·s/V`.
+        /// `A·c_l,low` (1/m).
+        lift_low: T,
+        /// `R/S_low` (m): `y = S/S_low = saturation_per_spin·s/V`.
         saturation_per_spin: T,
+        /// `S_low/S_sat`: `x = ratio·y`.
+        ratio: T,
+        /// `ratio²`.
+        ratio_sq: T,
     },
 }
 
@@ -266,13 +277,20 @@ impl<T: Real> Forces<T> {
                 crisis,
                 drag_lift,
                 lift_v,
+                lift_low,
                 saturation_per_spin,
+                ratio,
+                ratio_sq,
             } => {
                 // Both laws as `P + Q·V` with P, Q from V² and s alone, so the square root
                 // is the last input the force waits for: one multiply–add after it, as for
-                // the linear family. At V = 0, u² = k²/0 is ∞ or NaN: the saturated
-                // branch, `V·1 = 0`.
-                let (sat_0, sat_1) = saturation_times_speed(saturation_per_spin * spin, speed_sq);
+                // the linear family. At V = 0, y² = k²/0 is ∞ or NaN: the saturated
+                // branches, `V·1 = 0`. The main component's `x² = ratio²·y²` needs no
+                // second division.
+                let k = saturation_per_spin * spin;
+                let y_sq = k * k / speed_sq;
+                let (low_0, low_1) = saturation_parts(k, y_sq);
+                let (sat_0, sat_1) = saturation_parts(ratio * k, ratio_sq * y_sq);
                 // The crisis term, the last to be ready, joins in the last addition.
                 let kd = if drag {
                     (drag_lift * sat_0 + drag_v * speed)
@@ -281,7 +299,8 @@ impl<T: Real> Forces<T> {
                     zero
                 };
                 let kl = if lift {
-                    lift_v * sat_0 + lift_v * speed * sat_1
+                    (lift_v * sat_0 + lift_low * low_0)
+                        + (lift_v * sat_1 + lift_low * low_1) * speed
                 } else {
                     zero
                 };
@@ -303,9 +322,9 @@ impl<T: Real> Forces<T> {
     /// ∂F/∂V·V = u²·(6V − 8k + 3u²V)   (u < 1; V above),      ∂(Δ·c·V)/∂V = Δ·c·(6c − 5)
     /// ```
     ///
-    /// (from `u²` alone, beside the square root). The modern family's spin term is left
-    /// out: it is zero past the lift's saturation (a ball after a bounce), and below it the
-    /// spin decays by about 1–2 % a second at run-out speeds.
+    /// (from `u²` alone, beside the square root), for each lift component. The modern
+    /// family's spin term is left out: it is zero past the lift's saturation, and below it
+    /// the spin decays by about 1–2 % a second at run-out speeds.
     #[allow(clippy::too_many_arguments)]
     pub(crate) fn factor_rates(
         &self,
@@ -327,26 +346,36 @@ impl<T: Real> Forces<T> {
                 crisis,
                 drag_lift,
                 lift_v,
+                lift_low,
                 saturation_per_spin,
+                ratio,
+                ratio_sq,
             } => {
                 let k = saturation_per_spin * spin;
-                // At V = 0, u² is ∞ or NaN: the saturated branch, as in `factors`.
-                let u_sq = k * k / speed_sq;
-                let saturation_rate = if u_sq < T::one() {
-                    let three_u_sq = lit::<T>(3.0) * u_sq;
-                    u_sq * (lit::<T>(6.0) * speed - lit::<T>(8.0) * k + three_u_sq * speed)
-                        * relative_speed_rate
-                } else {
-                    speed_rate
+                // At V = 0, y² is ∞ or NaN: the saturated branches, as in `factors`.
+                let y_sq = k * k / speed_sq;
+                let rate = |k: T, u_sq: T| {
+                    if u_sq < T::one() {
+                        let three_u_sq = lit::<T>(3.0) * u_sq;
+                        u_sq * (lit::<T>(6.0) * speed - lit::<T>(8.0) * k + three_u_sq * speed)
+                            * relative_speed_rate
+                    } else {
+                        speed_rate
+                    }
                 };
+                let (main_rate, low_rate) = (rate(ratio * k, ratio_sq * y_sq), rate(k, y_sq));
                 let dkd = if drag {
                     let c = crisis.weight(speed_sq);
                     let crisis_per_speed = crisis.below * c * (lit::<T>(6.0) * c - lit::<T>(5.0));
-                    (drag_v + crisis_per_speed) * speed_rate + drag_lift * saturation_rate
+                    (drag_v + crisis_per_speed) * speed_rate + drag_lift * main_rate
                 } else {
                     zero
                 };
-                let dkl = if lift { lift_v * saturation_rate } else { zero };
+                let dkl = if lift {
+                    lift_v * main_rate + lift_low * low_rate
+                } else {
+                    zero
+                };
                 (dkd, dkl)
             }
         }
@@ -354,12 +383,12 @@ impl<T: Real> Forces<T> {
 }
 
 /// `saturation(S/S_sat)·V = P + Q·V` ([`ModernAero::saturation`]) from `k = (R/S_sat)·s`
-/// and `q = V²`, without `V`: with `u = S/S_sat = k/V` and `u² = k²/q`,
+/// and `u² = k²/V²`, without `V`: with `u = S/S_sat = k/V`,
 /// `(1 − (1 − u)⁴)·V = 4u·V − 6u²·V + 4u³·V − u⁴·V = 4k·(1 + u²) − (6 + u²)·u²·V` below
-/// saturation (`u² < 1`), and `V` above it. One division, by `q`, beside the square root.
+/// saturation (`u² < 1`), and `V` above it. `u²` needs one division, by `V²`, beside the
+/// square root.
 #[inline(always)]
-fn saturation_times_speed<T: Real>(k: T, speed_sq: T) -> (T, T) {
-    let u_sq = k * k / speed_sq;
+fn saturation_parts<T: Real>(k: T, u_sq: T) -> (T, T) {
     if u_sq < T::one() {
         (
             lit::<T>(4.0) * k * (T::one() + u_sq),

@@ -81,13 +81,15 @@ impl AeroFamily {
         match self {
             Self::Quintavalla => vec![(0.05, 0.5), (0.0, 2.0), (0.0, 0.5), (0.0, 2.0), (0.0, 0.05)],
             Self::Modern => vec![
-                (0.1, 0.35),
+                (0.17, 0.35),
                 (0.3, 0.46),
                 (2e4, 2e5),
                 (0.05, 0.5),
                 (0.05, 1.5),
                 (0.0, 1.0),
                 (0.002, 0.0119),
+                (0.0, 0.3),
+                (0.01, 0.2),
             ],
         }
     }
@@ -99,7 +101,7 @@ impl AeroFamily {
     pub fn initial(self) -> Vec<f64> {
         match self {
             Self::Quintavalla => LinearAero::<f64>::quintavalla().to_array().to_vec(),
-            Self::Modern => vec![0.2, 0.42, 6e4, 0.3, 0.4, 0.5, 0.0094],
+            Self::Modern => vec![0.2, 0.42, 6e4, 0.25, 0.8, 0.3, 0.0094, 0.1, 0.15],
         }
     }
 
@@ -122,15 +124,7 @@ impl AeroFamily {
             Self::Quintavalla => {
                 AeroModel::Linear(LinearAero::from_array([at(0), at(1), at(2), at(3), at(4)]))
             }
-            Self::Modern => AeroModel::Modern(ModernAero::from_array([
-                at(0),
-                at(1),
-                at(2),
-                at(3),
-                at(4),
-                at(5),
-                at(6),
-            ])),
+            Self::Modern => AeroModel::Modern(ModernAero::from_array(core::array::from_fn(at))),
         }
     }
 }
