@@ -29,6 +29,7 @@
 mod linear;
 pub(crate) mod model;
 mod modern;
+mod saturation;
 
 pub use linear::{
     CD_SP, CD0, CL_SP, CL0, CM_SP, LINEAR_NAMES, LinearAero, MAX_LINEAR_COEFFICIENT,
