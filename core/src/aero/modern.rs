@@ -1,12 +1,13 @@
-//! The modern family: a smooth Reynolds-number drag crisis, a lift that rises steeply and
-//! saturates, a spin drag that follows the lift, and a spin decay of the Smits & Smith form.
+//! The modern family: a smooth Reynolds-number drag crisis, a lift of two saturating
+//! components (a steep low-spin one and a slow main one), a spin drag that follows the main
+//! lift, and a spin decay of the Smits & Smith form.
 //!
 //! With the spin parameter `S = |ω|·R/V`, the Reynolds number `Re = ρ·V·D/μ` and
-//! `u = min(S/S_sat, 1)`:
+//! `sat(u) = 1 − (1 − min(u, 1))⁴`:
 //!
 //! ```text
-//! C_L(S)     = c_l,max · (1 − (1 − u)⁴)
-//! C_D(S, Re) = c_d,super + (c_d,sub − c_d,super) / (1 + (Re/Re_c)⁶) + k_L · C_L(S)
+//! C_L(S)     = c_l,max · sat(S/S_sat) + c_l,low · sat(S/S_low)
+//! C_D(S, Re) = c_d,super + (c_d,sub − c_d,super) / (1 + (Re/Re_c)⁶) + k_L · c_l,max · sat(S/S_sat)
 //! C_M(S)     = c_m · S                          (dω/dt ∝ −V·ω)
 //! ```
 //!
@@ -17,30 +18,30 @@
 //!   stands for the measured transition. A polynomial step (smoothstep over 0.6–1.4 Re_c)
 //!   fitted as well but is only once differentiable, and the adaptive integrator then missed
 //!   its tolerance by centimetres (docs/aero.md).
-//! * **Lift.** Bearman & Harvey and Lyu et al. (2018), Proceedings 2(6):238, measure a lift
-//!   that grows quickly at small S and flattens above S ≈ 0.3; Nathan's calculator fits
-//!   `0.2294·S^0.4`, steeper than linear at small S. The quartic rises with slope
-//!   `4·c_l,max/S_sat` at S = 0, is 0 without spin, and reaches `c_l,max` at `S_sat` with
-//!   its first three derivatives zero (smooth enough for the 5th-order integrator), with
-//!   no `powf`. (A cubic fitted as well on the mean, 3.56 % on the worst row.)
+//! * **Lift.** Bearman & Harvey's lift is already ≈ 0.13 at their smallest spin parameter
+//!   (S ≈ 0.05) and rises about linearly from there (≈ 0.09 + 0.7·S); Naruo et al. ≈ 0.12
+//!   at S = 0.05; Nathan's calculator fits `0.2294·S^0.4`. One quartic cannot rise that
+//!   steeply at small S and keep rising after, so the lift has two: the low-spin component,
+//!   complete by `S_low`, and the main one. Each is 0 without spin and reaches its amplitude
+//!   with its first three derivatives zero (smooth enough for the 5th-order integrator),
+//!   with no `powf`. With `c_l,low = 0` the family is issue 10's.
 //! * **Spin drag.** Drag rises with spin in every measurement (Bearman & Harvey; Lyu et al.;
-//!   Nathan's `+0.2087·S`), but a drag linear in S cannot fit both a low-spin driver
-//!   (S ≈ 0.07, wants C_D ≈ 0.21) and the irons and wedges (S ≈ 0.2–0.45, want far less drag
-//!   than a steep linear law): the spin drag must saturate where the lift does. Tying it to
-//!   the lift (`k_L·C_L`, the form of a lift-induced drag) does that with one coefficient
-//!   (docs/aero.md compares the alternatives).
+//!   Nathan's `+0.2087·S`), but a drag linear in S cannot fit both a low-spin driver and the
+//!   irons and wedges (S ≈ 0.2–0.45): the spin drag must saturate where the lift does. Tying
+//!   it to the main lift (`k_L·c_l,max·sat(S/S_sat)`, the form of a lift-induced drag) does
+//!   that with one coefficient. The low-spin lift adds none: Bearman & Harvey's drag barely
+//!   moves at small S while their lift rises, and a fitted factor for it went to 0.
 //! * **Spin decay.** Smits & Smith (1994), "A new aerodynamic model of a golf ball in
 //!   flight", Science and Golf II: `dω/dt ≈ −0.0004·V[mph]·ω` per second (`−8.95·10⁻⁴ /m ·
 //!   V·ω` at standard air), the form of a moment coefficient linear in S.
 //!
-//! The coefficients of [`ModernAero::tour_2023`] were fitted to TrackMan's 2023 tour
-//! averages by `carry fit` (docs/aero.md). Two end on a bound: the subcritical drag at
-//! 0.46 (inside Bearman & Harvey's 0.45–0.5; higher would put C_D above 0.6 for the
-//! highest spins at Re = 4·10⁴) and the spin decay at 7.9 %/s for a driver (Smits &
-//! Smith: ≈ 6 %/s).
-//! The 23 averaged rows cannot tell the depth of the crisis from the spin decay apart: both
-//! act on the slow, high-spin end of a flight, and the carry error moves by < 0.02 % along
-//! that trade-off.
+//! The coefficients of [`ModernAero::tour_2023`] were fitted by `carry fit` jointly to
+//! TrackMan's 2023 tour averages and 2010 driver chart (docs/aero.md). Four end on a
+//! bound: the supercritical drag at 0.17 (the lowest measured; free, the fit takes an
+//! unphysical 0.12), the subcritical drag at 0.46 (inside Bearman & Harvey's 0.45–0.5), the
+//! spin decay at 7.9 %/s for a driver (Smits & Smith: ≈ 6 %/s) and `S_low` at 0.1: the
+//! flight data start at S ≈ 0.065 and cannot place it (any `S_low` ≤ 0.1 fits them alike);
+//! Bearman & Harvey's lift, linear from S ≈ 0.05, says the steep rise is over by then.
 
 use super::linear::coefficient;
 use crate::error::{Error, Field, Reason, Result};
@@ -77,7 +78,7 @@ pub struct ModernAero<T> {
 /// ../shared/data/trackman_tour_2023.csv --temperature 21.1 --humidity 50 --pressure 101325`
 /// (docs/aero.md), rounded to 4 significant digits.
 pub const TOUR_2023: [f64; MODERN_COEFFICIENTS] = [
-    0.17, 0.46, 5.851e4, 0.2732, 1.002, 0.6563, 0.0119, 0.09693, 0.2,
+    0.17, 0.46, 5.847e4, 0.2887, 1.006, 0.6227, 0.0119, 0.08714, 0.1,
 ];
 
 /// Names of the modern family's coefficients, in the order of [`ModernAero::to_array`]
