@@ -41,8 +41,8 @@ pub struct FitCmd {
     /// rules, each file its own header; not with `--family compliant`).
     #[arg(long = "also", value_name = "FILE.csv")]
     pub also: Vec<PathBuf>,
-    /// Model family to fit: `modern` (drag crisis, saturating lift, Smits & Smith spin
-    /// decay; 7 coefficients) or `quintavalla` (the seed's linear family, 5 coefficients);
+    /// Model family to fit: `modern` (drag crisis, a lift of two saturating components,
+    /// Smits & Smith spin decay; 9 coefficients) or `quintavalla` (the seed's linear family, 5 coefficients);
     /// `compliant`: the face–ball contact law on delivery → launch rows (club,
     /// club_speed_mph, attack_deg, dynamic_loft_deg, ball_speed_mph, launch_deg, spin_rpm,
     /// as ../shared/data/club_delivery.csv; writes a `--contact` file).

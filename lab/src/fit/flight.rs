@@ -35,8 +35,9 @@ pub enum AeroFamily {
     /// The seed's linear family: all five coefficients (`cd0, cd_spin, cl0, cl_spin,
     /// cm_spin`).
     Quintavalla,
-    /// The modern family: all seven coefficients (`cd_supercritical, cd_subcritical,
-    /// reynolds_critical, cl_max, cl_saturation_spin, cd_lift, cm_spin`).
+    /// The modern family: all nine coefficients (`cd_supercritical, cd_subcritical,
+    /// reynolds_critical, cl_max, cl_saturation_spin, cd_lift, cm_spin, cl_low,
+    /// cl_low_saturation_spin`).
     Modern,
 }
 
