@@ -306,27 +306,32 @@ fn draw(path: &str, issue10: &AeroModel<f64>) -> Result<(), Box<dyn std::error::
         if pick < 2 {
             for (k, &(lo, hi, re, name)) in bands.iter().enumerate() {
                 let c = blue(k as u8);
-                chart
-                    .draw_series(LineSeries::new(
-                        s_grid.iter().map(|&s| {
-                            let (cd, cl, _) = now.coefficients(s, re);
-                            (s, if pick == 0 { cl } else { cd })
-                        }),
-                        c.stroke_width(2),
-                    ))?
-                    .label(format!("tour2023, Re {re:.1e}"))
-                    .legend(move |(x, y)| {
-                        PathElement::new(vec![(x, y), (x + 16, y)], c.stroke_width(2))
-                    });
+                // The lift does not depend on Re: one curve, the points of every band.
+                if pick == 1 || k == 0 {
+                    let label = if pick == 0 {
+                        "tour2023 (any Re)".to_string()
+                    } else {
+                        format!("tour2023, Re {re:.1e}")
+                    };
+                    chart
+                        .draw_series(LineSeries::new(
+                            s_grid.iter().map(|&s| {
+                                let (cd, cl, _) = now.coefficients(s, re);
+                                (s, if pick == 0 { cl } else { cd })
+                            }),
+                            c.stroke_width(2),
+                        ))?
+                        .label(label)
+                        .legend(move |(x, y)| {
+                            PathElement::new(vec![(x, y), (x + 16, y)], c.stroke_width(2))
+                        });
+                }
                 chart
                     .draw_series(points.iter().filter(|p| p.1 >= lo && p.1 < hi).map(|p| {
                         Circle::new((p.0, if pick == 0 { p.3 } else { p.2 }), 3, c.filled())
                     }))?
                     .label(format!("Bearman & Harvey, {name}"))
                     .legend(move |(x, y)| Circle::new((x + 8, y), 3, c.filled()));
-                if pick == 0 {
-                    break; // The lift does not depend on Re: one curve.
-                }
             }
             let orange = RGBColor(230, 120, 20);
             chart
