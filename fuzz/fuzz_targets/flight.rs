@@ -133,6 +133,8 @@ fn run<T: Real>(b: &mut Bytes<'_>) -> Result<()> {
             cl_saturation_spin: lit(b.param(-0.1, 12.0)),
             cd_lift: lit(b.param(-0.5, 2.5)),
             cm_spin: lit(b.param(-0.01, 1.5)),
+            cl_low: lit(b.param(-0.1, 2.5)),
+            cl_low_saturation_spin: lit(b.param(-0.1, 12.0)),
         }),
     };
     let prepared = scene.prepare(&ball)?;

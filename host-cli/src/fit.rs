@@ -37,8 +37,12 @@ pub struct FitCmd {
     /// Measured shots (CSV; `-` for standard input). See `carry fit --help` for columns.
     #[arg(long, value_name = "FILE.csv")]
     pub input: PathBuf,
-    /// Model family to fit: `modern` (drag crisis, saturating lift, Smits & Smith spin
-    /// decay; 7 coefficients) or `quintavalla` (the seed's linear family, 5 coefficients);
+    /// More measured shots, fitted jointly with --input (repeatable; the same columns
+    /// rules, each file its own header; not with `--family compliant`).
+    #[arg(long = "also", value_name = "FILE.csv")]
+    pub also: Vec<PathBuf>,
+    /// Model family to fit: `modern` (drag crisis, a lift of two saturating components,
+    /// Smits & Smith spin decay; 9 coefficients) or `quintavalla` (the seed's linear family, 5 coefficients);
     /// `compliant`: the face–ball contact law on delivery → launch rows (club,
     /// club_speed_mph, attack_deg, dynamic_loft_deg, ball_speed_mph, launch_deg, spin_rpm,
     /// as ../shared/data/club_delivery.csv; writes a `--contact` file).
@@ -402,6 +406,13 @@ pub fn run(cmd: &FitCmd) -> Result<(), Failure> {
 /// Bad input (status 2); a fit that cannot start or a file that cannot be written.
 pub fn report(cmd: &FitCmd) -> Result<String, Failure> {
     if cmd.family == crate::fit_contact::FAMILY {
+        if !cmd.also.is_empty() {
+            return Err(InputError::new(
+                "also",
+                "the compliant family reads one --input file".to_string(),
+            )
+            .into());
+        }
         return crate::fit_contact::report(cmd);
     }
     let evaluate = match &cmd.evaluate {
@@ -427,7 +438,16 @@ pub fn report(cmd: &FitCmd) -> Result<String, Failure> {
     })?;
     let global = cmd.conditions();
     crate::scene::air::<f64>(&global)?;
-    let (rows, ignored) = read_rows(&cmd.input, cmd.units, &global)?;
+    let (mut rows, mut ignored) = read_rows(&cmd.input, cmd.units, &global)?;
+    for more in &cmd.also {
+        let (r, i) = read_rows(more, cmd.units, &global)?;
+        rows.extend(r);
+        ignored.extend(
+            i.into_iter()
+                .filter(|c| !ignored.contains(c))
+                .collect::<Vec<_>>(),
+        );
+    }
     let problem = AeroProblem::new(family);
     let options = FitOptions {
         leave_one_out: !cmd.no_cross_validation,
@@ -464,7 +484,7 @@ pub fn report(cmd: &FitCmd) -> Result<String, Failure> {
              carry mean |error| {:.2} %, max {:.2} %{}",
             family_name(family),
             rows.len(),
-            cmd.input.display(),
+            inputs(cmd),
             summary.mean_abs_pct,
             summary.max_abs_pct,
             result
@@ -495,6 +515,15 @@ pub fn report(cmd: &FitCmd) -> Result<String, Failure> {
         table(family, &result, &ignored, cmd)
     };
     Ok(text)
+}
+
+/// The input files, joined with `and`.
+fn inputs(cmd: &FitCmd) -> String {
+    core::iter::once(&cmd.input)
+        .chain(&cmd.also)
+        .map(|p| p.display().to_string())
+        .collect::<Vec<_>>()
+        .join(" and ")
 }
 
 fn family_name(f: AeroFamily) -> &'static str {

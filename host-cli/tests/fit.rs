@@ -247,3 +247,74 @@ fn bad_input_is_one_line_and_status_two() {
         assert!(err.contains(needle), "{args:?}: {err}");
     }
 }
+
+/// `--also` joins more inputs: the tour table and the 2010 chart fitted jointly reproduce
+/// the calibrated default (`--evaluate tour2023` on the same rows gives the same errors),
+/// and the compliant family, which reads one file, refuses it with status 2.
+#[test]
+fn joins_inputs_with_also() {
+    let Some(data) = tour_data() else {
+        return; // ../shared absent
+    };
+    let chart = data.replace(
+        "trackman_tour_2023.csv",
+        "trackman_driver_optimizer_2010.csv",
+    );
+    let conditions = [
+        "--temperature",
+        "21.1",
+        "--humidity",
+        "50",
+        "--pressure",
+        "101325",
+    ];
+    let mut args = vec![
+        "fit",
+        "--input",
+        &data,
+        "--also",
+        &chart,
+        "--json",
+        "--no-cross-validation",
+    ];
+    args.extend(conditions);
+    let v = json(&args);
+    assert_eq!(v["rows"], 53);
+    assert_eq!(v["fit"]["converged"], true);
+    // The chart's rows observe carry only.
+    assert_eq!(v["fit"]["rows"][52]["observed"][1], Value::Null);
+    let mut args = vec![
+        "fit",
+        "--input",
+        &data,
+        "--also",
+        &chart,
+        "--json",
+        "--evaluate",
+        "tour2023",
+    ];
+    args.extend(conditions);
+    let e = json(&args);
+    let mean = |x: &Value| {
+        x["fit"]["summary"][0]["mean_abs_pct"]
+            .as_f64()
+            .unwrap_or(f64::NAN)
+    };
+    assert!(
+        (mean(&v) - mean(&e)).abs() < 0.01,
+        "{} {}",
+        mean(&v),
+        mean(&e)
+    );
+    let (code, _, err) = run(&[
+        "fit",
+        "--family",
+        "compliant",
+        "--input",
+        &data,
+        "--also",
+        &chart,
+    ]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("also"), "{err}");
+}

@@ -6,6 +6,10 @@
 //! cd_supercritical = 0.2       # coefficients by name; a missing one takes the value of
 //! cd_lift = 0.5                # the family's built-in model (tour2023 / quintavalla)
 //! ```
+//!
+//! One exception keeps the files of issue 10 meaning what they meant: a modern file that
+//! names all seven coefficients of issue 10's form and neither `cl_low` nor
+//! `cl_low_saturation_spin` has no low-spin lift (`cl_low = 0`).
 
 use carry_core::aero::{AeroModel, BUILT_IN_MODELS, LINEAR_NAMES, LinearAero, MODERN_NAMES};
 use std::fmt::Write as _;
@@ -82,6 +86,12 @@ pub fn from_toml(text: &str) -> Result<AeroModel<f64>, String> {
         };
         values[i] = x;
     }
+    if family == "modern"
+        && names[..7].iter().all(|n| table.contains_key(*n))
+        && !names[7..].iter().any(|n| table.contains_key(*n))
+    {
+        values[7] = 0.0; // an issue 10 file: no low-spin lift
+    }
     let model = match family {
         "quintavalla" => AeroModel::Linear(LinearAero::from_array(to_array(&values)?)),
         _ => AeroModel::Modern(carry_core::aero::ModernAero::from_array(to_array(&values)?)),
@@ -145,5 +155,26 @@ mod tests {
         let m = from_toml("family = \"quintavalla\"\ncd0 = 0.2");
         let q = LinearAero::<f64>::quintavalla();
         assert_eq!(m, Ok(AeroModel::Linear(LinearAero { cd0: 0.2, ..q })));
+    }
+
+    #[test]
+    fn an_issue_10_file_keeps_its_model() {
+        let old = "family = \"modern\"\ncd_supercritical = 0.1478\ncd_subcritical = 0.46\n\
+                   reynolds_critical = 65810.0\ncl_max = 0.3232\ncl_saturation_spin = 0.5881\n\
+                   cd_lift = 0.4745\ncm_spin = 0.0119\n";
+        let Ok(AeroModel::Modern(m)) = from_toml(old) else {
+            panic!("reads")
+        };
+        assert_eq!((m.cl_max, m.cl_low), (0.3232, 0.0));
+        // Naming a low-spin key, or leaving an old key out, takes the built-in values.
+        let Ok(AeroModel::Modern(n)) = from_toml(&format!("{old}cl_low_saturation_spin = 0.05\n"))
+        else {
+            panic!("reads")
+        };
+        assert!(n.cl_low > 0.0 && n.cl_low_saturation_spin == 0.05);
+        let Ok(AeroModel::Modern(p)) = from_toml("family = \"modern\"\ncl_max = 0.3\n") else {
+            panic!("reads")
+        };
+        assert!(p.cl_low > 0.0);
     }
 }

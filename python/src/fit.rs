@@ -75,6 +75,7 @@ pub fn run(args: &FitArgs) -> Result<String, FitError> {
     }
     let cmd = FitCmd {
         input: args.input.clone(),
+        also: Vec::new(),
         family: args.family.clone(),
         output: args.output.clone(),
         evaluate: args.evaluate.clone(),

@@ -415,9 +415,12 @@ fn errors_are_typed() {
         ),
         Err(Error::invalid(Field::Tolerance, Reason::NotPositive))
     );
-    // A target above the apex (16.07 m).
+    // A target a metre above the apex.
+    let Ok(flat) = fly(&ball, &ok, &Scene::default(), &d, None) else {
+        panic!("flat landing")
+    };
     let high = Scene {
-        landing_height_m: 17.0,
+        landing_height_m: flat.apex_m + 1.0,
         ..Scene::default()
     };
     assert_eq!(fly(&ball, &ok, &high, &d, None), Err(Error::NoLanding));

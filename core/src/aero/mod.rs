@@ -29,6 +29,7 @@
 mod linear;
 pub(crate) mod model;
 mod modern;
+mod saturation;
 
 pub use linear::{
     CD_SP, CD0, CL_SP, CL0, CM_SP, LINEAR_NAMES, LinearAero, MAX_LINEAR_COEFFICIENT,
@@ -36,7 +37,7 @@ pub use linear::{
 };
 pub(crate) use model::PreparedAero;
 pub use model::{AeroModel, BUILT_IN_MODELS};
-pub use modern::{MODERN_NAMES, ModernAero, TOUR_2023};
+pub use modern::{MODERN_COEFFICIENTS, MODERN_NAMES, ModernAero, TOUR_2023};
 
 use crate::real::{Real, lit};
 use crate::scene::PreparedScene;

@@ -12,6 +12,7 @@
 
 use super::linear::LinearAero;
 use super::modern::ModernAero;
+use super::saturation::SpinLaws;
 use crate::ball::Ball;
 use crate::error::Result;
 use crate::real::{Real, lit, to_f64};
@@ -132,9 +133,11 @@ impl<T: Real> AeroModel<T> {
                     forces: Forces::Modern {
                         drag_v: a * c.cd_supercritical,
                         crisis: Crisis::new(a * (c.cd_subcritical - c.cd_supercritical), per_speed),
-                        drag_lift: a * c.cd_lift * c.cl_max,
-                        lift_v: a * c.cl_max,
-                        saturation_per_spin: r / c.cl_saturation_spin,
+                        spin: SpinLaws::new(
+                            r,
+                            (a * c.cl_max, a * c.cd_lift * c.cl_max, c.cl_saturation_spin),
+                            (a * c.cl_low, T::zero(), c.cl_low_saturation_spin),
+                        ),
                     },
                     decay: half_rho_area * r * ball.diameter_m() / ball.inertia_kgm2() * c.cm_spin,
                 }
@@ -175,19 +178,15 @@ pub(crate) enum Forces<T> {
         /// `A·c_l,sp·R` (1/rad).
         lift_s: T,
     },
-    /// With `x = S/S_sat` ([`ModernAero`]): `A·C_L·V = lift_v·saturation(x)·V`,
-    /// `A·C_D·V = (drag_v + A·(c_d,sub − c_d,super)·crisis + drag_lift·saturation(x))·V`.
+    /// [`ModernAero`]: `A·C_D·V = (drag_v + A·(c_d,sub − c_d,super)·crisis)·V + spin drag`,
+    /// `A·C_L·V` and the spin drag `A·k_L·c_l,max·sat(S/S_sat)·V` from [`SpinLaws`].
     Modern {
         /// `A·c_d,super` (1/m).
         drag_v: T,
         /// The crisis term `A·(c_d,sub − c_d,super)·crisis·V`.
         crisis: Crisis<T>,
-        /// `A·k_L·c_l,max` (1/m).
-        drag_lift: T,
-        /// `A·c_l,max` (1/m).
-        lift_v: T,
-        /// `R/S_sat` (m): `S/S_sat = saturation_per_spin·s/V`.
-        saturation_per_spin: T,
+        /// The lift and the spin drag.
+        spin: SpinLaws<T>,
     },
 }
 
@@ -264,27 +263,19 @@ impl<T: Real> Forces<T> {
             Self::Modern {
                 drag_v,
                 crisis,
-                drag_lift,
-                lift_v,
-                saturation_per_spin,
+                spin: ref spin_laws,
             } => {
                 // Both laws as `P + Q·V` with P, Q from V² and s alone, so the square root
                 // is the last input the force waits for: one multiply–add after it, as for
-                // the linear family. At V = 0, u² = k²/0 is ∞ or NaN: the saturated
-                // branch, `V·1 = 0`.
-                let (sat_0, sat_1) = saturation_times_speed(saturation_per_spin * spin, speed_sq);
+                // the linear family. At V = 0 the laws are past saturation: `Q·0 = 0`.
+                let ((lift_0, lift_1), (drag_0, drag_1)) = spin_laws.at(spin, speed_sq);
                 // The crisis term, the last to be ready, joins in the last addition.
                 let kd = if drag {
-                    (drag_lift * sat_0 + drag_v * speed)
-                        + (drag_lift * speed * sat_1 + crisis.at(speed_sq) * speed)
+                    (drag_0 + drag_v * speed) + (drag_1 * speed + crisis.at(speed_sq) * speed)
                 } else {
                     zero
                 };
-                let kl = if lift {
-                    lift_v * sat_0 + lift_v * speed * sat_1
-                } else {
-                    zero
-                };
+                let kl = if lift { lift_0 + lift_1 * speed } else { zero };
                 (kd, kl)
             }
         }
@@ -295,17 +286,12 @@ impl<T: Real> Forces<T> {
     /// The rates of change `(dk_d/dt, dk_l/dt)` (1/s²) of the factors of
     /// [`Forces::factors`] when the air speed changes at the relative rate
     /// `relative_speed_rate = V̇/V` (1/s) and the spin at `spin_rate` (rad/s²):
-    /// `∂k/∂V·V̇ + ∂k/∂s·ṡ`. For the modern family, with `F = saturation(u)·V`,
-    /// `u = S/S_sat = k/V`, `k = (R/S_sat)·s` and the crisis weight
-    /// `c = 1/(1 + (Re/Re_c)⁶)`:
-    ///
-    /// ```text
-    /// ∂F/∂V·V = u²·(6V − 8k + 3u²V)   (u < 1; V above),      ∂(Δ·c·V)/∂V = Δ·c·(6c − 5)
-    /// ```
-    ///
-    /// (from `u²` alone, beside the square root). The modern family's spin term is left
-    /// out: it is zero past the lift's saturation (a ball after a bounce), and below it the
-    /// spin decays by about 1–2 % a second at run-out speeds.
+    /// `∂k/∂V·V̇ + ∂k/∂s·ṡ`. For the modern family, the spin laws' `V·∂F/∂V` on their
+    /// piece ([`SpinLaws::speed_derivatives`]; for one quartic, `u²·(6V − 8k + 3u²V)` below
+    /// saturation, `V` above) and, with the crisis weight `c = 1/(1 + (Re/Re_c)⁶)`,
+    /// `∂(Δ·c·V)/∂V = Δ·c·(6c − 5)` (from `V²` alone, beside the square root). The modern
+    /// family's spin term is left out: it is zero past the lift's saturation, and below it
+    /// the spin decays by about 1–2 % a second at run-out speeds.
     #[allow(clippy::too_many_arguments)]
     pub(crate) fn factor_rates(
         &self,
@@ -325,48 +311,24 @@ impl<T: Real> Forces<T> {
             Self::Modern {
                 drag_v,
                 crisis,
-                drag_lift,
-                lift_v,
-                saturation_per_spin,
+                spin: ref spin_laws,
             } => {
-                let k = saturation_per_spin * spin;
-                // At V = 0, u² is ∞ or NaN: the saturated branch, as in `factors`.
-                let u_sq = k * k / speed_sq;
-                let saturation_rate = if u_sq < T::one() {
-                    let three_u_sq = lit::<T>(3.0) * u_sq;
-                    u_sq * (lit::<T>(6.0) * speed - lit::<T>(8.0) * k + three_u_sq * speed)
-                        * relative_speed_rate
-                } else {
-                    speed_rate
-                };
+                let (lift_rate, drag_rate) = spin_laws.speed_derivatives(spin, speed, speed_sq);
                 let dkd = if drag {
                     let c = crisis.weight(speed_sq);
                     let crisis_per_speed = crisis.below * c * (lit::<T>(6.0) * c - lit::<T>(5.0));
-                    (drag_v + crisis_per_speed) * speed_rate + drag_lift * saturation_rate
+                    (drag_v + crisis_per_speed) * speed_rate + drag_rate * relative_speed_rate
                 } else {
                     zero
                 };
-                let dkl = if lift { lift_v * saturation_rate } else { zero };
+                let dkl = if lift {
+                    lift_rate * relative_speed_rate
+                } else {
+                    zero
+                };
                 (dkd, dkl)
             }
         }
-    }
-}
-
-/// `saturation(S/S_sat)·V = P + Q·V` ([`ModernAero::saturation`]) from `k = (R/S_sat)·s`
-/// and `q = V²`, without `V`: with `u = S/S_sat = k/V` and `u² = k²/q`,
-/// `(1 − (1 − u)⁴)·V = 4u·V − 6u²·V + 4u³·V − u⁴·V = 4k·(1 + u²) − (6 + u²)·u²·V` below
-/// saturation (`u² < 1`), and `V` above it. One division, by `q`, beside the square root.
-#[inline(always)]
-fn saturation_times_speed<T: Real>(k: T, speed_sq: T) -> (T, T) {
-    let u_sq = k * k / speed_sq;
-    if u_sq < T::one() {
-        (
-            lit::<T>(4.0) * k * (T::one() + u_sq),
-            -(lit::<T>(6.0) + u_sq) * u_sq,
-        )
-    } else {
-        (T::zero(), T::one())
     }
 }
 

@@ -1,12 +1,13 @@
-//! The modern family: a smooth Reynolds-number drag crisis, a lift that rises steeply and
-//! saturates, a spin drag that follows the lift, and a spin decay of the Smits & Smith form.
+//! The modern family: a smooth Reynolds-number drag crisis, a lift of two saturating
+//! components (a steep low-spin one and a slow main one), a spin drag that follows the main
+//! lift, and a spin decay of the Smits & Smith form.
 //!
 //! With the spin parameter `S = |ω|·R/V`, the Reynolds number `Re = ρ·V·D/μ` and
-//! `u = min(S/S_sat, 1)`:
+//! `sat(u) = 1 − (1 − min(u, 1))⁴`:
 //!
 //! ```text
-//! C_L(S)     = c_l,max · (1 − (1 − u)⁴)
-//! C_D(S, Re) = c_d,super + (c_d,sub − c_d,super) / (1 + (Re/Re_c)⁶) + k_L · C_L(S)
+//! C_L(S)     = c_l,max · sat(S/S_sat) + c_l,low · sat(S/S_low)
+//! C_D(S, Re) = c_d,super + (c_d,sub − c_d,super) / (1 + (Re/Re_c)⁶) + k_L · c_l,max · sat(S/S_sat)
 //! C_M(S)     = c_m · S                          (dω/dt ∝ −V·ω)
 //! ```
 //!
@@ -17,30 +18,30 @@
 //!   stands for the measured transition. A polynomial step (smoothstep over 0.6–1.4 Re_c)
 //!   fitted as well but is only once differentiable, and the adaptive integrator then missed
 //!   its tolerance by centimetres (docs/aero.md).
-//! * **Lift.** Bearman & Harvey and Lyu et al. (2018), Proceedings 2(6):238, measure a lift
-//!   that grows quickly at small S and flattens above S ≈ 0.3; Nathan's calculator fits
-//!   `0.2294·S^0.4`, steeper than linear at small S. The quartic rises with slope
-//!   `4·c_l,max/S_sat` at S = 0, is 0 without spin, and reaches `c_l,max` at `S_sat` with
-//!   its first three derivatives zero (smooth enough for the 5th-order integrator), with
-//!   no `powf`. (A cubic fitted as well on the mean, 3.56 % on the worst row.)
+//! * **Lift.** Bearman & Harvey's lift is already ≈ 0.13 at their smallest spin parameter
+//!   (S ≈ 0.05) and rises about linearly from there (≈ 0.09 + 0.7·S); Naruo et al. ≈ 0.12
+//!   at S = 0.05; Nathan's calculator fits `0.2294·S^0.4`. One quartic cannot rise that
+//!   steeply at small S and keep rising after, so the lift has two: the low-spin component,
+//!   complete by `S_low`, and the main one. Each is 0 without spin and reaches its amplitude
+//!   with its first three derivatives zero (smooth enough for the 5th-order integrator),
+//!   with no `powf`. With `c_l,low = 0` the family is issue 10's.
 //! * **Spin drag.** Drag rises with spin in every measurement (Bearman & Harvey; Lyu et al.;
-//!   Nathan's `+0.2087·S`), but a drag linear in S cannot fit both a low-spin driver
-//!   (S ≈ 0.07, wants C_D ≈ 0.21) and the irons and wedges (S ≈ 0.2–0.45, want far less drag
-//!   than a steep linear law): the spin drag must saturate where the lift does. Tying it to
-//!   the lift (`k_L·C_L`, the form of a lift-induced drag) does that with one coefficient
-//!   (docs/aero.md compares the alternatives).
+//!   Nathan's `+0.2087·S`), but a drag linear in S cannot fit both a low-spin driver and the
+//!   irons and wedges (S ≈ 0.2–0.45): the spin drag must saturate where the lift does. Tying
+//!   it to the main lift (`k_L·c_l,max·sat(S/S_sat)`, the form of a lift-induced drag) does
+//!   that with one coefficient. The low-spin lift adds none: Bearman & Harvey's drag barely
+//!   moves at small S while their lift rises, and a fitted factor for it went to 0.
 //! * **Spin decay.** Smits & Smith (1994), "A new aerodynamic model of a golf ball in
 //!   flight", Science and Golf II: `dω/dt ≈ −0.0004·V[mph]·ω` per second (`−8.95·10⁻⁴ /m ·
 //!   V·ω` at standard air), the form of a moment coefficient linear in S.
 //!
-//! The coefficients of [`ModernAero::tour_2023`] were fitted to TrackMan's 2023 tour
-//! averages by `carry fit` (docs/aero.md). Two end on a bound: the subcritical drag at
-//! 0.46 (inside Bearman & Harvey's 0.45–0.5; higher would put C_D above 0.6 for the
-//! highest spins at Re = 4·10⁴) and the spin decay at 7.9 %/s for a driver (Smits &
-//! Smith: ≈ 6 %/s).
-//! The 23 averaged rows cannot tell the depth of the crisis from the spin decay apart: both
-//! act on the slow, high-spin end of a flight, and the carry error moves by < 0.02 % along
-//! that trade-off.
+//! The coefficients of [`ModernAero::tour_2023`] were fitted by `carry fit` jointly to
+//! TrackMan's 2023 tour averages and 2010 driver chart (docs/aero.md). Four end on a
+//! bound: the supercritical drag at 0.17 (the lowest measured; free, the fit takes an
+//! unphysical 0.12), the subcritical drag at 0.46 (inside Bearman & Harvey's 0.45–0.5), the
+//! spin decay at 7.9 %/s for a driver (Smits & Smith: ≈ 6 %/s) and `S_low` at 0.1: the
+//! flight data start at S ≈ 0.065 and cannot place it (any `S_low` ≤ 0.1 fits them alike);
+//! Bearman & Harvey's lift, linear from S ≈ 0.05, says the steep rise is over by then.
 
 use super::linear::coefficient;
 use crate::error::{Error, Field, Reason, Result};
@@ -65,17 +66,24 @@ pub struct ModernAero<T> {
     pub cd_lift: T,
     /// Moment (spin-decay) slope in the spin parameter, `c_m`, in `0..=1`.
     pub cm_spin: T,
+    /// Amplitude of the lift's low-spin component, `c_l,low`, in `0..=2` (0: the form of
+    /// issue 10, one saturating lift).
+    pub cl_low: T,
+    /// Spin parameter at which the low-spin component saturates, `S_low`, in `(0, 10]`.
+    pub cl_low_saturation_spin: T,
 }
 
 /// The calibrated default ([`ModernAero::tour_2023`]) in `f64`, in the order of
 /// [`ModernAero::to_array`]. Produced by `carry fit --family modern --input
 /// ../shared/data/trackman_tour_2023.csv --temperature 21.1 --humidity 50 --pressure 101325`
 /// (docs/aero.md), rounded to 4 significant digits.
-pub const TOUR_2023: [f64; 7] = [0.1478, 0.46, 6.581e4, 0.3232, 0.5881, 0.4745, 0.0119];
+pub const TOUR_2023: [f64; MODERN_COEFFICIENTS] = [
+    0.17, 0.46, 5.847e4, 0.2887, 1.006, 0.6227, 0.0119, 0.08714, 0.1,
+];
 
 /// Names of the modern family's coefficients, in the order of [`ModernAero::to_array`]
 /// (the keys of an aerodynamic model file).
-pub const MODERN_NAMES: [&str; 7] = [
+pub const MODERN_NAMES: [&str; MODERN_COEFFICIENTS] = [
     "cd_supercritical",
     "cd_subcritical",
     "reynolds_critical",
@@ -83,7 +91,12 @@ pub const MODERN_NAMES: [&str; 7] = [
     "cl_saturation_spin",
     "cd_lift",
     "cm_spin",
+    "cl_low",
+    "cl_low_saturation_spin",
 ];
+
+/// The number of the modern family's coefficients.
+pub const MODERN_COEFFICIENTS: usize = 9;
 
 impl<T: Real> ModernAero<T> {
     /// The calibrated default: fitted to TrackMan's 2023 PGA and LPGA tour averages.
@@ -95,7 +108,7 @@ impl<T: Real> ModernAero<T> {
     /// The coefficients in order `[cd_supercritical, cd_subcritical, reynolds_critical,
     /// cl_max, cl_saturation_spin, cd_lift, cm_spin]`.
     #[must_use]
-    pub fn to_array(&self) -> [T; 7] {
+    pub fn to_array(&self) -> [T; MODERN_COEFFICIENTS] {
         [
             self.cd_supercritical,
             self.cd_subcritical,
@@ -104,12 +117,14 @@ impl<T: Real> ModernAero<T> {
             self.cl_saturation_spin,
             self.cd_lift,
             self.cm_spin,
+            self.cl_low,
+            self.cl_low_saturation_spin,
         ]
     }
 
     /// The inverse of [`ModernAero::to_array`].
     #[must_use]
-    pub fn from_array(c: [T; 7]) -> Self {
+    pub fn from_array(c: [T; MODERN_COEFFICIENTS]) -> Self {
         Self {
             cd_supercritical: c[0],
             cd_subcritical: c[1],
@@ -118,6 +133,8 @@ impl<T: Real> ModernAero<T> {
             cl_saturation_spin: c[4],
             cd_lift: c[5],
             cm_spin: c[6],
+            cl_low: c[7],
+            cl_low_saturation_spin: c[8],
         }
     }
 
@@ -138,7 +155,13 @@ impl<T: Real> ModernAero<T> {
         }
         coefficient(self.cl_max, two, Field::LiftCoefficient)?;
         let saturation = coefficient(self.cl_saturation_spin, lit(10.0), Field::LiftCoefficient)?;
-        if saturation <= T::zero() {
+        coefficient(self.cl_low, two, Field::LiftCoefficient)?;
+        let low = coefficient(
+            self.cl_low_saturation_spin,
+            lit(10.0),
+            Field::LiftCoefficient,
+        )?;
+        if saturation <= T::zero() || low <= T::zero() {
             return Err(Error::invalid(Field::LiftCoefficient, Reason::NotPositive));
         }
         coefficient(self.cm_spin, T::one(), Field::SpinDecayCoefficient)?;
@@ -162,19 +185,31 @@ impl<T: Real> ModernAero<T> {
         T::one() - w2 * w2
     }
 
-    /// `C_L(S) = c_l,max · (1 − (1 − min(S/S_sat, 1))⁴)`.
+    /// The lift's two components `(c_l,max·sat(S/S_sat), c_l,low·sat(S/S_low))`.
     #[must_use]
-    pub fn lift_coefficient(&self, spin_parameter: T) -> T {
-        self.cl_max * Self::saturation(spin_parameter / self.cl_saturation_spin)
+    pub fn lift_components(&self, spin_parameter: T) -> (T, T) {
+        (
+            self.cl_max * Self::saturation(spin_parameter / self.cl_saturation_spin),
+            self.cl_low * Self::saturation(spin_parameter / self.cl_low_saturation_spin),
+        )
     }
 
-    /// `C_D(S, Re) = c_d,super + (c_d,sub − c_d,super)·crisis + k_L·C_L(S)`.
+    /// `C_L(S) = c_l,max·sat(S/S_sat) + c_l,low·sat(S/S_low)`, `sat(x) = 1 − (1 − min(x, 1))⁴`.
+    #[must_use]
+    pub fn lift_coefficient(&self, spin_parameter: T) -> T {
+        let (main, low) = self.lift_components(spin_parameter);
+        main + low
+    }
+
+    /// `C_D(S, Re) = c_d,super + (c_d,sub − c_d,super)·crisis + k_L·c_l,max·sat(S/S_sat)`
+    /// (the low-spin lift adds no drag).
     #[must_use]
     pub fn drag_coefficient(&self, spin_parameter: T, reynolds: T) -> T {
+        let (main, _) = self.lift_components(spin_parameter);
         self.cd_supercritical
             + (self.cd_subcritical - self.cd_supercritical)
                 * Self::crisis(reynolds / self.reynolds_critical)
-            + self.cd_lift * self.lift_coefficient(spin_parameter)
+            + self.cd_lift * main
     }
 
     /// `C_M(S) = c_m·S`.
@@ -191,17 +226,20 @@ mod tests {
     #[test]
     fn laws_are_the_documented_formulas() {
         let m = ModernAero::<f64>::tour_2023();
-        let [sup, sub, rec, clm, sat, kl, cm] = TOUR_2023;
+        let [sup, sub, rec, clm, sat, kl, cm, cll, satl] = TOUR_2023;
         for (s, re) in [
             (0.0, 2.0e5),
+            (0.05, 2.2e5),
             (0.1, 1.5e5),
             (0.3, 6.0e4),
             (0.6, 4.0e4),
+            (1.2, 4.0e4),
             (0.2, 7.0e4),
         ] {
             let step = 1.0 / (1.0 + (re / rec).powi(6));
-            let cl = clm * (1.0 - (1.0 - (s / sat).min(1.0)).powi(4));
-            let cd = sup + (sub - sup) * step + kl * cl;
+            let main = clm * (1.0 - (1.0 - (s / sat).min(1.0)).powi(4));
+            let cl = main + cll * (1.0 - (1.0 - (s / satl).min(1.0)).powi(4));
+            let cd = sup + (sub - sup) * step + kl * main;
             assert!((m.lift_coefficient(s) - cl).abs() < 1e-15);
             assert!((m.drag_coefficient(s, re) - cd).abs() < 1e-15);
             assert!((m.moment_coefficient(s) - cm * s).abs() < 1e-18);
@@ -211,14 +249,16 @@ mod tests {
         assert!((at(rec) - 0.5 * (sup + sub)).abs() < 1e-12);
         assert!((at(0.3 * rec) - sub).abs() < 1e-3 && (at(3.0 * rec) - sup).abs() < 1e-3);
         assert!((ModernAero::<f64>::crisis(1.0) - 0.5).abs() < 1e-15);
-        // The lift: slope 4·c_l,max/S_sat at 0, c_l,max from S_sat on, rising in between.
+        // The lift: slope 4·(c_l,max/S_sat + c_l,low/S_low) at 0, c_l,max + c_l,low from
+        // the larger saturation on, rising in between.
         assert_eq!(m.lift_coefficient(0.0), 0.0);
-        assert!((m.lift_coefficient(1e-6) / 1e-6 - 4.0 * clm / sat).abs() < 1e-4);
-        assert_eq!(
-            (m.lift_coefficient(sat), m.lift_coefficient(0.6)),
-            (clm, clm)
-        );
+        let slope = 4.0 * (clm / sat + cll / satl);
+        assert!((m.lift_coefficient(1e-7) / 1e-7 - slope).abs() < 1e-4 * slope);
+        let top = sat.max(satl);
+        assert_eq!(m.lift_coefficient(top), m.lift_coefficient(top + 0.5));
+        assert!((m.lift_coefficient(top) - (clm + cll)).abs() < 1e-15);
         assert!(m.lift_coefficient(0.2) < m.lift_coefficient(0.3));
+        assert!(m.lift_coefficient(0.03) < m.lift_coefficient(0.05));
     }
 
     #[test]
@@ -240,6 +280,14 @@ mod tests {
                 },
                 Field::ReynoldsNumber,
             ),
+            (
+                ModernAero {
+                    cl_low_saturation_spin: 0.0,
+                    ..m
+                },
+                Field::LiftCoefficient,
+            ),
+            (ModernAero { cl_low: -0.1, ..m }, Field::LiftCoefficient),
             (
                 ModernAero {
                     cd_lift: f32::NAN,

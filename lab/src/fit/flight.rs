@@ -35,8 +35,9 @@ pub enum AeroFamily {
     /// The seed's linear family: all five coefficients (`cd0, cd_spin, cl0, cl_spin,
     /// cm_spin`).
     Quintavalla,
-    /// The modern family: all seven coefficients (`cd_supercritical, cd_subcritical,
-    /// reynolds_critical, cl_max, cl_saturation_spin, cd_lift, cm_spin`).
+    /// The modern family: all nine coefficients (`cd_supercritical, cd_subcritical,
+    /// reynolds_critical, cl_max, cl_saturation_spin, cd_lift, cm_spin, cl_low,
+    /// cl_low_saturation_spin`).
     Modern,
 }
 
@@ -70,36 +71,42 @@ impl AeroFamily {
     }
 
     /// Physical bounds. Modern: a drag crisis where Bearman & Harvey measured it
-    /// (`c_d,sub` 0.3–0.46: within their ≈ 0.45–0.5, and low enough that the highest spin
-    /// at Re = 4·10⁴ stays below C_D = 0.6; `Re_c` 2·10⁴–2·10⁵), `c_d,super` 0.1–0.35, a
-    /// lift that saturates at `c_l,max` 0.05–0.5 (`C_L < 0.5`) for `S_sat` 0.05–1.5, a spin
-    /// drag of at most the lift (`k_L` 0–1), and a driver's spin decay (70 m/s, 1.225
-    /// kg/m³) within 1.3–7.9 %/s (Smits & Smith: ~6 %/s); `C_D < 0.6` is checked on the
-    /// fitted model (docs/aero.md). Linear: wide boxes around Quintavalla's values.
+    /// (`c_d,sub` 0.3–0.46: within their ≈ 0.45–0.5, and low enough that C_D stays below
+    /// 0.6 over S ≤ 0.6, Re ≥ 5·10⁴; `Re_c` 2·10⁴–2·10⁵), `c_d,super` 0.17–0.35 (no ball
+    /// measured below ≈ 0.17: Kensrud 2010, Lyu et al. 2018), a main lift that saturates
+    /// at `c_l,max` 0.05–0.5 for `S_sat` 0.05–1.5, a spin drag of at most that lift (`k_L`
+    /// 0–1), a low-spin lift `c_l,low` 0–0.3 complete by `S_low` 0.01–0.1 (Bearman &
+    /// Harvey's lift is already linear in S from their lowest S ≈ 0.05 on), and a driver's
+    /// spin decay (70 m/s, 1.225 kg/m³) within 1.3–7.9 %/s (Smits & Smith: ~6 %/s); C_D and
+    /// C_L are checked on the fitted model (docs/aero.md). Linear: wide boxes around
+    /// Quintavalla's values.
     #[must_use]
     pub fn bounds(self) -> Vec<(f64, f64)> {
         match self {
             Self::Quintavalla => vec![(0.05, 0.5), (0.0, 2.0), (0.0, 0.5), (0.0, 2.0), (0.0, 0.05)],
             Self::Modern => vec![
-                (0.1, 0.35),
+                (0.17, 0.35),
                 (0.3, 0.46),
                 (2e4, 2e5),
                 (0.05, 0.5),
                 (0.05, 1.5),
                 (0.0, 1.0),
                 (0.002, 0.0119),
+                (0.0, 0.3),
+                (0.01, 0.1),
             ],
         }
     }
 
     /// The default starting point: the seed model, or published values for the modern
-    /// family (Bearman & Harvey's crisis, a lift saturating near S = 0.3 at 0.3, Nathan's
-    /// drag rise with spin as about 0.2087·S ≈ 0.5·C_L, Smits & Smith's decay).
+    /// family (Bearman & Harvey's crisis; their lift, ≈ 0.09 by S = 0.05 and rising
+    /// ≈ linearly after; a spin drag of half the lift, as Nathan's 0.2087·S; Smits & Smith's
+    /// decay).
     #[must_use]
     pub fn initial(self) -> Vec<f64> {
         match self {
             Self::Quintavalla => LinearAero::<f64>::quintavalla().to_array().to_vec(),
-            Self::Modern => vec![0.2, 0.42, 6e4, 0.3, 0.4, 0.5, 0.0094],
+            Self::Modern => vec![0.2, 0.42, 6e4, 0.3, 1.0, 0.5, 0.0094, 0.09, 0.05],
         }
     }
 
@@ -122,15 +129,7 @@ impl AeroFamily {
             Self::Quintavalla => {
                 AeroModel::Linear(LinearAero::from_array([at(0), at(1), at(2), at(3), at(4)]))
             }
-            Self::Modern => AeroModel::Modern(ModernAero::from_array([
-                at(0),
-                at(1),
-                at(2),
-                at(3),
-                at(4),
-                at(5),
-                at(6),
-            ])),
+            Self::Modern => AeroModel::Modern(ModernAero::from_array(core::array::from_fn(at))),
         }
     }
 }
