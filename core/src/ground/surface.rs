@@ -29,6 +29,10 @@ pub const STIMP_RANGE_M: (f64, f64) = (FOOT_M, 30.0 * FOOT_M);
 pub const PENNER_RESTITUTION_0: f64 = 0.510;
 /// Penner's ball–turf friction coefficient (2002).
 pub const PENNER_FRICTION: f64 = 0.40;
+/// The firm fairway's rolling resistance at low speed ρ₀, calibrated to TrackMan's 2010
+/// driver chart (roll = total − carry on "a typical fairway"; `carry_lab::ground_fit`,
+/// docs/ground.md): it rolls like a stimp-11 green at putting speeds.
+pub const FAIRWAY_ROLLING_RESISTANCE: f64 = 0.063;
 /// Largest accepted friction coefficient, rolling resistance and crater scale.
 pub const MAX_TURF_COEFFICIENT: f64 = 10.0;
 
@@ -66,11 +70,19 @@ pub struct Turf<T> {
     pub crater_scale: T,
 }
 
-/// `(5/7)ρg = v₀²/(2S)` solved for ρ, with standard gravity (the stimpmeter is read on
+/// Growth of the rolling resistance with speed, `c` in `ρ(v) = ρ₀(1 + c v²)` (s²/m²):
+/// the grass drag. Penner's putting form as quoted in patents citing it,
+/// `ρ = (0.7028/S[ft])·(1 + 0.0065 v²)` with `v` in ft/s: `c = 0.0065/0.3048²`.
+pub const GRASS_DRAG_S2PM2: f64 = 0.0065 / (FOOT_M * FOOT_M);
+
+/// The stimpmeter's roll `S = ln(1 + c v₀²)/(2·(5/7)ρ₀g·c)` (a roll decelerating at
+/// `(5/7)ρ₀g(1 + c v²)`) solved for ρ₀, with standard gravity (the stimpmeter is read on
 /// Earth, whatever the scene's gravity).
 fn resistance_from_stimp<T: Real>(stimp_m: T) -> T {
-    let v0 = lit::<T>(STIMPMETER_SPEED_MPS);
-    v0 * v0 / (lit::<T>(2.0 * 5.0 / 7.0 * crate::scene::STANDARD_GRAVITY_MPS2) * stimp_m)
+    let v0 = STIMPMETER_SPEED_MPS;
+    let c = GRASS_DRAG_S2PM2;
+    let reach = lit::<T>(c * v0 * v0).ln_1p();
+    reach / (lit::<T>(2.0 * 5.0 / 7.0 * crate::scene::STANDARD_GRAVITY_MPS2 * c) * stimp_m)
 }
 
 impl<T: Real> Surface<T> {
@@ -97,7 +109,7 @@ impl<T: Real> Surface<T> {
             crater_scale: lit(kappa),
         };
         match *self {
-            Self::FairwayFirm => Ok(penner(1.0, stimp(8.0), 1.0)),
+            Self::FairwayFirm => Ok(penner(1.0, lit(FAIRWAY_ROLLING_RESISTANCE), 1.0)),
             Self::FairwaySoft => Ok(penner(0.8, stimp(5.0), 1.2)),
             Self::Rough => Ok(Turf {
                 restitution: lit(0.30),
