@@ -182,7 +182,8 @@ pub enum Error {
     Singular,
     /// The ball never comes down through the landing height (e.g. a target above the apex).
     NoLanding,
-    /// The flight time limit was reached before landing.
+    /// The flight time limit was reached before landing (or, with a ground, while the
+    /// ball was still bouncing: e.g. down a slope near the steepest accepted).
     TimeLimit,
     /// The adaptive integrator could not meet its tolerance without the step size
     /// underflowing (the tolerance is too tight for the chosen precision).
@@ -305,7 +306,9 @@ impl fmt::Display for Error {
             Self::NoApproach => f.write_str("the club is not approaching the ball: no impact"),
             Self::Singular => f.write_str("the impact system is numerically singular"),
             Self::NoLanding => f.write_str("the ball never comes down through the landing height"),
-            Self::TimeLimit => f.write_str("the flight time limit was reached before landing"),
+            Self::TimeLimit => {
+                f.write_str("the time limit was reached before the ball landed or while it bounced")
+            }
             Self::StepSizeUnderflow => {
                 f.write_str("the integrator cannot meet the tolerance in this precision")
             }

@@ -94,7 +94,7 @@ pub fn message(code: u32) -> &'static CStr {
         3 => c"the club is not approaching the ball: no impact",
         4 => c"the impact system is numerically singular",
         5 => c"the ball never comes down through the landing height",
-        6 => c"the flight time limit was reached before landing",
+        6 => c"the time limit was reached before the ball landed or while it bounced",
         7 => c"the integrator cannot meet the tolerance in this precision",
         8 => c"the fixed-step integrator diverged: the step is too large",
         9 => c"the adaptive integrator used up its step budget before landing",

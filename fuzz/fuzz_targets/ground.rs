@@ -160,6 +160,9 @@ fn run<T: Real>(b: &mut Bytes<'_>) -> Result<()> {
         "non-finite rollout {g:?}"
     );
     assert!(g.time_to_rest_s >= out.flight_time_s, "{g:?}");
+    // Nothing astronomical (issue 20): launches are at most MAX_BALL_SPEED_MPS, and a
+    // minute of rolling down the steepest accepted slope adds under 10 km.
+    assert!(to_f64(g.total_m) < 1.0e5, "astronomical rollout {g:?}");
     assert!(g.total_m >= T::zero() && g.bounces <= MAX_BOUNCES);
     if let Some(r) = recorder {
         assert!(

@@ -129,6 +129,14 @@ impl From<Error> for InputError {
                     Field::Restitution | Field::GroundRestitution => format!("{reason} (0 to 1)"),
                     Field::Stimp => format!("{reason} (1 to 30 ft)"),
                     Field::GroundNormal => format!("{reason} (0 to 45 degrees)"),
+                    Field::BallVelocity | Field::BallSpeed => format!(
+                        "{reason} (at most {} m/s at launch: the aerodynamics are incompressible)",
+                        carry_core::flight::MAX_BALL_SPEED_MPS
+                    ),
+                    Field::BallSpin => format!(
+                        "{reason} (at most {:.0} rpm at launch)",
+                        carry_core::flight::MAX_SPIN_RADPS * 60.0 / core::f64::consts::TAU
+                    ),
                     Field::GroundFriction | Field::RollingResistance | Field::CraterScale => {
                         format!("{reason} (0 to 10)")
                     }
@@ -166,7 +174,7 @@ impl From<Error> for InputError {
             ),
             Error::TimeLimit => Self::new(
                 "time_limit",
-                "the ball had not landed when the time limit was reached",
+                "the time limit was reached before the ball landed, or while it was still bouncing",
             ),
             Error::StepSizeUnderflow => Self::new(
                 "tolerance",

@@ -38,7 +38,7 @@ pub(crate) use model::PreparedAero;
 pub use model::{AeroModel, BUILT_IN_MODELS};
 pub use modern::{MODERN_NAMES, ModernAero, TOUR_2023};
 
-use crate::real::Real;
+use crate::real::{Real, lit};
 use crate::scene::PreparedScene;
 use nalgebra::Vector3;
 
@@ -56,6 +56,21 @@ pub(crate) const S: usize = 6;
 pub(crate) trait Rhs<T: Real> {
     /// Evaluates the derivative.
     fn eval(&self, y: &State<T>) -> State<T>;
+
+    /// Whether a fixed step of `h` seconds from `y0` to `y1` grew no faster than the exact
+    /// dynamics can. Drag only slows the ball in the air's frame and lift is normal to
+    /// it, so the air speed `V = |v − w(y)|` grows by at most `g·h` plus the change of
+    /// the wind between the two heights, and the spin only decays:
+    ///
+    /// ```text
+    /// V₁ ≤ (V₀ + g·h + |w(y₁) − w(y₀)|)·(1 + 1/8),     |s₁| ≤ s₀·(1 + 1/8)
+    /// ```
+    ///
+    /// An explicit step past its stability limit (`h·k_d·V ≳ 2`) breaks this at once and
+    /// then grows geometrically; the 1/8 slack leaves room for the truncation error of a
+    /// stable step. Without this test such a step can stay finite yet astronomically
+    /// large (issue 20).
+    fn step_is_bounded(&self, y0: &State<T>, y1: &State<T>, h: T) -> bool;
 }
 
 /// The flight dynamics of one shot: a prepared scene and the (constant) spin axis.
@@ -244,6 +259,15 @@ impl<T: Real> Rhs<T> for Dynamics<'_, T> {
         let wind = self.scene.has_wind();
         self.eval_switched(y, e.drag, e.lift, e.spin_decay, wind)
     }
+
+    fn step_is_bounded(&self, y0: &State<T>, y1: &State<T>, h: T) -> bool {
+        let wind = &self.scene.wind;
+        let (w0, w1) = (wind.at(y0[Y]), wind.at(y1[Y]));
+        let air = |y: &State<T>, w: &Vector3<T>| (Vector3::new(y[3], y[4], y[5]) - w).norm();
+        let slack = lit::<T>(1.125);
+        let speed_bound = (air(y0, &w0) + self.scene.gravity * h + (w1 - w0).norm()) * slack;
+        air(y1, &w1) <= speed_bound && y1[S].abs() <= y0[S] * slack
+    }
 }
 
 /// The same dynamics with the effects fixed at compile time (monomorphised): used only to
@@ -264,6 +288,10 @@ impl<T: Real, const DRAG: bool, const LIFT: bool, const DECAY: bool, const WIND:
     #[inline(always)]
     fn eval(&self, y: &State<T>) -> State<T> {
         self.0.eval_switched(y, DRAG, LIFT, DECAY, WIND != 0)
+    }
+
+    fn step_is_bounded(&self, y0: &State<T>, y1: &State<T>, h: T) -> bool {
+        self.0.step_is_bounded(y0, y1, h)
     }
 }
 

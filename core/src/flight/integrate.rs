@@ -97,7 +97,7 @@ pub(crate) fn fixed<T: Real, R: Rhs<T>>(
         } else {
             combine(&y, hh, [1.0], [&f0])
         };
-        if !all_finite(&y1) {
+        if !(all_finite(&y1) && rhs.step_is_bounded(&y, &y1, hh)) {
             return Err(Error::Unstable);
         }
         let f1 = rhs.eval(&y1);

@@ -79,6 +79,17 @@ pub const DEFAULT_TOLERANCE_F32: f64 = 3.0e-4;
 /// the tightest tolerance takes a few hundred; the budget only stops absurd inputs (it
 /// bounds the run time of every flight, so firmware never hangs): [`Error::StepLimit`].
 pub const MAX_ADAPTIVE_STEPS: u32 = 100_000;
+/// Fastest accepted launch (m/s): 1.5× the fastest golf ball speed on record (about
+/// 97 m/s, long drive), Mach 0.44. The force laws are incompressible (their coefficients
+/// come from wind tunnels and launch monitors below Mach 0.3); far beyond this a result
+/// would be finite but meaningless, so a faster launch is [`Field::BallVelocity`]
+/// [`Reason::OutOfRange`] (issue 20: a fuzzed 1.3·10⁵ m/s launch).
+pub const MAX_BALL_SPEED_MPS: f64 = 150.0;
+/// Largest accepted launch spin (rad/s, about 28,600 rpm): twice the highest spins a
+/// golf ball is measured with (wedges, about 12,000–14,000 rpm). The lift and spin-decay
+/// laws are fitted at spin parameters below about 0.5; a faster spin is
+/// [`Field::BallSpin`] [`Reason::OutOfRange`].
+pub const MAX_SPIN_RADPS: f64 = 3000.0;
 /// Largest accepted tolerance (`rtol`, and `atol` in m, m/s, rad/s): looser than 1 the
 /// error test stops controlling anything.
 pub const MAX_TOLERANCE: f64 = 1.0;
@@ -359,10 +370,12 @@ pub struct FlightOutcome<T: Real> {
 /// # Errors
 /// [`Error::InvalidInput`] for an invalid scene, launch or integrator (NaN/∞, negative
 /// density, humidity outside [0, 1], landing height not finite, non-positive step or
-/// tolerance); [`Error::NoLanding`] when the ball never comes down through the landing
+/// tolerance, a launch faster than [`MAX_BALL_SPEED_MPS`] or spinning faster than
+/// [`MAX_SPIN_RADPS`]); [`Error::NoLanding`] when the ball never comes down through the landing
 /// height (a launch at or below the horizon from the landing height, unless the scene has
-/// a ground: the ball then meets the turf at once, a topped shot, and bounces and rolls); [`Error::TimeLimit`]; [`Error::StepSizeUnderflow`] when the adaptive step cannot
-/// meet the tolerance (also for `rtol` below 4ε of `T`); [`Error::Unstable`] when a fixed step diverges.
+/// a ground: the ball then meets the turf at once, a topped shot, and bounces and rolls);
+/// [`Error::TimeLimit`]; [`Error::StepSizeUnderflow`] when the adaptive step cannot
+/// meet the tolerance (also for `rtol` below 4ε of `T`); [`Error::Unstable`] when a fixed step diverges (grows faster than the dynamics allow).
 pub fn fly<T: Real>(
     ball: &Ball<T>,
     launch: &BallMotion<T>,
@@ -399,12 +412,12 @@ fn run<'s, T: Real, R: Rhs<T>>(
 ) -> Result<FlightOutcome<T>> {
     let launch = launch.validated()?;
     let method = integrator.method()?;
-    let spin = launch.spin_radps.norm();
-    if !spin.is_finite() {
-        return Err(Error::invalid(Field::BallSpin, Reason::OutOfRange));
-    }
-    if !launch.velocity_mps.norm().is_finite() {
+    if !(launch.velocity_mps.norm() <= lit(MAX_BALL_SPEED_MPS)) {
         return Err(Error::invalid(Field::BallVelocity, Reason::OutOfRange));
+    }
+    let spin = launch.spin_radps.norm();
+    if !(spin <= lit(MAX_SPIN_RADPS)) {
+        return Err(Error::invalid(Field::BallSpin, Reason::OutOfRange));
     }
     let axis = if spin > T::zero() {
         launch.spin_radps / spin

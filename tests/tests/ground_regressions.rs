@@ -1,0 +1,101 @@
+//! Regressions found by fuzzing the ground (issue 20), through the public API.
+
+use carry_core::ground::{Ground, Surface};
+use carry_core::wind::Wind;
+use carry_core::{Ball, BallMotion, Error, Field, Integrator, Reason, Scene, fly};
+use nalgebra::Vector3;
+
+/// Issue 20: an f32 flight at 1.3·10⁵ m/s and 2.3·10⁶ rad/s with a 30 ms RK4 step landed
+/// with an astronomically large (finite) velocity, and the roll on a 40° slope came back
+/// `Ok` with `total_m = ∞`. (The fuzz input is fuzz/corpus/ground/issue-20-nonfinite-rollout.)
+#[test]
+fn issue_20_f32_rollout_is_finite_or_an_error() {
+    let motion = BallMotion::<f32> {
+        velocity_mps: Vector3::new(75686.54, 108983.45, -11210.602),
+        spin_radps: Vector3::new(189.79669, -2261634.5, 1281.3812),
+    };
+    let scene = Scene::<f32> {
+        wind: Wind::profile(Vector3::new(11.981918, -7.352941, -7.3538566)),
+        landing_height_m: -7.401999,
+        ground: Some(Ground {
+            surface: Surface::FairwayFirm,
+            normal: Vector3::new(0.01808194, 1.1679256, 0.99334705),
+        }),
+        ..Scene::default()
+    };
+    let out = fly(
+        &Ball::standard(),
+        &motion,
+        &scene,
+        &Integrator::Rk4 {
+            step_s: 0.030171435,
+        },
+        None,
+    );
+    // Far outside the model's validity (Mach 390): rejected up front, naming the launch.
+    assert_eq!(
+        out,
+        Err(Error::invalid(Field::BallVelocity, Reason::OutOfRange))
+    );
+    // The same scene from the fastest accepted launch, with the same 30 ms RK4 step, and
+    // with steps far past RK4's stability limit: finite figures or a typed error, never
+    // an astronomical rollout.
+    let speed = carry_core::flight::MAX_BALL_SPEED_MPS as f32 * 0.999;
+    let fast = BallMotion::<f32> {
+        velocity_mps: motion.velocity_mps.normalize() * speed,
+        spin_radps: motion.spin_radps.normalize()
+            * (carry_core::flight::MAX_SPIN_RADPS as f32 * 0.999),
+    };
+    for step_s in [0.030171435_f32, 0.5, 5.0, 60.0] {
+        let out = fly(
+            &Ball::standard(),
+            &fast,
+            &scene,
+            &Integrator::Rk4 { step_s },
+            None,
+        );
+        match out {
+            Ok(out) => {
+                let g = out.ground.expect("a ground gives a rollout");
+                let figures = [g.total_m, g.roll_m, g.time_to_rest_s, out.landing_speed_mps];
+                assert!(figures.iter().all(|x| x.is_finite()), "{g:?}");
+                // Nothing faster than the launch plus what the fall and the roll can add.
+                assert!(out.landing_speed_mps < 2.0 * speed, "{out:?}");
+                assert!(g.total_m < 1.0e5, "{g:?}");
+            }
+            Err(e) => assert!(
+                matches!(e, Error::Unstable | Error::NoLanding | Error::TimeLimit),
+                "step {step_s}: {e:?}"
+            ),
+        }
+    }
+}
+
+/// A fixed step far past the explicit method's stability limit is `Unstable`, not a
+/// finite but astronomical landing (issue 20's second fault): 100 m/s with Euler at 10 s
+/// (`h·k_d·V ≈ 4`, past Euler's limit of 2) and RK4 at 30 s (≈ 14, past 2.8).
+#[test]
+fn unstable_fixed_steps_are_errors() {
+    let motion = carry_core::Launch::<f64> {
+        ball_speed_mps: 100.0,
+        launch_angle_rad: 0.2,
+        launch_direction_rad: 0.0,
+        backspin_radps: 300.0,
+        sidespin_radps: 0.0,
+    }
+    .ball_motion()
+    .expect("valid launch");
+    for integrator in [
+        Integrator::Euler { step_s: 10.0 },
+        Integrator::Rk4 { step_s: 30.0 },
+    ] {
+        let out = fly(
+            &Ball::standard(),
+            &motion,
+            &Scene::default(),
+            &integrator,
+            None,
+        );
+        assert_eq!(out, Err(Error::Unstable), "{integrator:?}");
+    }
+}
