@@ -64,6 +64,16 @@ pub(crate) struct Roll<'r, 'b, T: Real> {
 impl<T: Real> Roll<'_, '_, T> {
     fn record(&mut self, time_since_start: T, position: Vector3<T>, velocity: Vector3<T>) {
         let spin = self.normal.cross(&velocity) / self.radius;
+        self.record_spinning(time_since_start, position, velocity, spin);
+    }
+
+    fn record_spinning(
+        &mut self,
+        time_since_start: T,
+        position: Vector3<T>,
+        velocity: Vector3<T>,
+        spin: Vector3<T>,
+    ) {
         if let Some(r) = self.recorder.as_deref_mut() {
             r.push(Sample {
                 time_s: self.start_time + time_since_start,
@@ -109,6 +119,14 @@ impl<T: Real> Roll<'_, '_, T> {
     /// Skids from `p0` with the in-plane velocity `v0` and the spin `spin` until the
     /// contact stops slipping (module docs): the position, velocity and duration at the
     /// start of the pure roll.
+    ///
+    /// Fixed steps of [`ROLL_STEP_S`]: Coulomb friction `μ g_n` against the slip (on the
+    /// centre and, as a torque, on the spin) and the slope's pull for the step, then the
+    /// grass drag on the speed, `s' = max(s − A h, 0)/(1 + B s h)` with `A = ρ₀ g_n`,
+    /// `B = A c` (as the roll's, on the centre alone: a sliding ball need not turn).
+    /// Friction stops within the step where the slip would reverse; the last of the slip
+    /// goes in one gripping impulse `Δv = −(2/7)s`. Each part only takes energy (and the
+    /// pull gives what gravity gives).
     fn skid(
         &mut self,
         p0: Vector3<T>,
@@ -118,31 +136,71 @@ impl<T: Real> Roll<'_, '_, T> {
         let n = self.normal;
         let g_n = -self.gravity.dot(&n);
         let g_t = self.gravity + n * g_n;
-        // Slip of the contact point, v + ω × (−R n̂), in the plane.
-        let slip = v0 - spin.cross(&n) * self.radius;
-        let slip = slip - n * slip.dot(&n);
-        let size = slip.norm();
+        let r = self.radius;
+        let in_plane = |x: Vector3<T>| x - n * x.dot(&n);
+        let slip_of = |v: &Vector3<T>, w: &Vector3<T>| in_plane(v - w.cross(&n) * r);
         let grip = self.friction * g_n;
-        if !(size > T::zero() && grip > T::zero()) {
-            return (p0, v0, T::zero());
+        let (mut p, mut v, mut w) = (p0, v0, *spin);
+        let mut slip = slip_of(&v, &w);
+        let h = lit::<T>(ROLL_STEP_S);
+        let resist = self.resistance * g_n;
+        let drag = resist * self.grass_drag;
+        let spin_per_grip = lit::<T>(2.5) / r;
+        let mut t = T::zero();
+        let steps = (ROLL_TIME_CAP_S / ROLL_STEP_S) as u32;
+        for _ in 0..steps {
+            let size = slip.norm();
+            if !(size > T::zero() && grip > T::zero()) {
+                break;
+            }
+            let dir = slip / size;
+            // The slip closes at (7/2)μg_n less the slope's pull along it.
+            let closing = lit::<T>(3.5) * grip - g_t.dot(&dir);
+            if !(closing > T::zero()) {
+                break;
+            }
+            // Friction for at most the step, stopping where the slip would reverse.
+            let dt = smaller(size / closing, h);
+            let v1 = v + (g_t - dir * grip) * dt;
+            let w1 = w + n.cross(&dir) * (spin_per_grip * grip * dt);
+            // The grass drag on the speed (never a gain, never a reversal).
+            let speed = v1.norm();
+            let speed1 = larger(speed - resist * dt, T::zero()) / (T::one() + drag * speed * dt);
+            let v1 = if speed > T::zero() {
+                v1 * (speed1 / speed)
+            } else {
+                v1
+            };
+            let p1 = p + (v + v1) * (dt * lit(0.5));
+            let (pa, va, wa, ta) = (p, v, w, t);
+            if self.recorder.is_some() {
+                let mut last = t;
+                while let Some(ts) = self.next_sample_after(last) {
+                    if ts > t + dt {
+                        break;
+                    }
+                    let f = (ts - ta) / dt;
+                    self.record_spinning(
+                        ts,
+                        pa + (p1 - pa) * f,
+                        va + (v1 - va) * f,
+                        wa + (w1 - wa) * f,
+                    );
+                    last = ts;
+                }
+            }
+            p = p1;
+            v = in_plane(v1);
+            w = w1;
+            t += dt;
+            slip = slip_of(&v, &w);
+            if dt < h {
+                break;
+            }
         }
-        let dir = slip / size;
-        // The slip closes at (7/2)μg_n less the slope's pull along it.
-        let closing = lit::<T>(3.5) * grip - g_t.dot(&dir);
-        if !(closing > T::zero()) {
-            return (p0, v0, T::zero());
-        }
-        let duration = size / closing;
-        let accel = g_t - dir * grip;
-        let at = move |tau: T| {
-            (
-                p0 + v0 * tau + accel * (tau * tau * lit(0.5)),
-                v0 + accel * tau,
-            )
-        };
-        self.record_span(T::zero(), duration, at);
-        let (p, v) = at(duration);
-        (p, v - n * v.dot(&n), duration)
+        // What is left of the slip goes in one gripping impulse (none if it closed).
+        let v = v - slip * lit::<T>(2.0 / 7.0);
+        (p, v, t)
     }
 
     /// Skids (while the contact slips) and rolls from `p0` with the in-plane velocity `v0`
