@@ -1,5 +1,7 @@
 //! Roll against landing angle and landing speed on the firm fairway (docs/ground.md):
-//! drives of 100–160 mph with launch angles and spins that land them at 5°–60°.
+//! drives of 100–160 mph with launch angles and spins that land them at 5°–60°; then the
+//! run-out alone from a landing at each angle and speed with 2,500 rpm of backspin (a
+//! launch downwards from the turf is a landing there: the run-out starts at once).
 //! `cargo run --release -p carry-lab --example roll_by_landing`.
 use carry_core::ground::Surface;
 use carry_core::units::{deg, rpm};
@@ -56,6 +58,31 @@ fn main() -> Result<(), String> {
                 g.bounces
             );
         }
+    }
+    let speeds = [15.0, 20.0, 25.0, 30.0, 35.0];
+    print!("\nroll (yd) from a landing at angle (rows, deg) and speed (columns, m/s), 2500 rpm:\n      ");
+    for v in speeds {
+        print!(" {v:6.0}");
+    }
+    println!();
+    for angle in [5.0, 10.0, 15.0, 20.0, 25.0, 30.0, 35.0, 40.0, 45.0, 50.0, 55.0, 60.0] {
+        print!("{angle:5.0}°");
+        for v in speeds {
+            let landing = Launch {
+                ball_speed_mps: v,
+                launch_angle_rad: deg(-angle),
+                launch_direction_rad: 0.0,
+                backspin_radps: rpm(2500.0),
+                sidespin_radps: 0.0,
+            };
+            let m = landing.ball_motion().map_err(|e| e.to_string())?;
+            let o = scene
+                .fly(&m, &Integrator::default(), None)
+                .map_err(|e| e.to_string())?;
+            let g = o.ground.ok_or("no ground")?;
+            print!(" {:6.1}", g.roll_m / YARD_M);
+        }
+        println!();
     }
     Ok(())
 }
