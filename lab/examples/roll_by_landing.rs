@@ -60,12 +60,16 @@ fn main() -> Result<(), String> {
         }
     }
     let speeds = [15.0, 20.0, 25.0, 30.0, 35.0];
-    print!("\nroll (yd) from a landing at angle (rows, deg) and speed (columns, m/s), 2500 rpm:\n      ");
+    print!(
+        "\nroll (yd) from a landing at angle (rows, deg) and speed (columns, m/s), 2500 rpm:\n      "
+    );
     for v in speeds {
         print!(" {v:6.0}");
     }
     println!();
-    for angle in [5.0, 10.0, 15.0, 20.0, 25.0, 30.0, 35.0, 40.0, 45.0, 50.0, 55.0, 60.0] {
+    for angle in [
+        5.0, 10.0, 15.0, 20.0, 25.0, 30.0, 35.0, 40.0, 45.0, 50.0, 55.0, 60.0,
+    ] {
         print!("{angle:5.0}°");
         for v in speeds {
             let landing = Launch {
