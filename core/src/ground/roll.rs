@@ -208,13 +208,13 @@ impl<T: Real> Roll<'_, '_, T> {
     pub(crate) fn run(mut self, p0: Vector3<T>, v0: Vector3<T>, spin: &Vector3<T>) -> RollEnd<T> {
         let (p0, v0, skid) = self.skid(p0, v0, spin);
         self.start_time += skid;
-        let mut end = self.roll(p0, v0);
+        let mut end = self.roll(p0, v0, lit::<T>(ROLL_TIME_CAP_S) - skid);
         end.duration += skid;
         end
     }
 
     /// Rolls from `p0` with the in-plane velocity `v0`.
-    fn roll(mut self, p0: Vector3<T>, v0: Vector3<T>) -> RollEnd<T> {
+    fn roll(mut self, p0: Vector3<T>, v0: Vector3<T>, cap: T) -> RollEnd<T> {
         let n = self.normal;
         let g_n = -self.gravity.dot(&n);
         let g_t = self.gravity + n * g_n;
@@ -222,7 +222,7 @@ impl<T: Real> Roll<'_, '_, T> {
         // a(v) = A + B v² along −v̂: A = (5/7)ρ₀g_n, B = A·c.
         let resist = five_sevenths * self.resistance * g_n;
         let drag = resist * self.grass_drag;
-        let cap = lit::<T>(ROLL_TIME_CAP_S);
+        let cap = larger(cap, T::zero());
         if g_t.norm_squared() == T::zero() {
             return self.level(p0, v0, resist, cap);
         }
@@ -232,7 +232,8 @@ impl<T: Real> Roll<'_, '_, T> {
         let half_h = h * lit(0.5);
         let (mut p, mut v) = (p0, v0);
         let mut t = T::zero();
-        let steps = (ROLL_TIME_CAP_S / ROLL_STEP_S) as u32;
+        // At most the time cap's steps (what the skid left of it, rounded up).
+        let steps = (to_f64(cap / h).min(ROLL_TIME_CAP_S / ROLL_STEP_S) + 0.999) as u32;
         for _ in 0..steps {
             // Half a kick of the slope's pull, the resistance over the whole step, half a
             // kick (Strang splitting). The resistance on the speed alone,
@@ -319,8 +320,16 @@ impl<T: Real> Roll<'_, '_, T> {
         } * (per_b * lit(0.5));
         let state = move |tau: T| {
             let (sn, cs) = (theta0 - k * tau).sin_cos();
-            // ln(cos(θ₀ − kτ)/cos θ₀) = ln(cos(θ₀ − kτ)) + ln(1 + w²)/2
-            let x = larger(cs.ln() * per_b + full, T::zero());
+            // cos(θ₀ − kτ)/cos θ₀ = cos kτ + w sin kτ = 1 + w sin kτ − 2 sin²(kτ/2): the
+            // logarithm from ln_1p, exact for a tiny kτ too (a nearly frictionless turf,
+            // where ln cos(θ₀ − kτ) − ln cos θ₀ would cancel catastrophically).
+            let half = (k * tau * lit(0.5)).sin();
+            let x = (w * (k * tau).sin() - half * half * lit(2.0)).ln_1p() * per_b;
+            let x = if x.is_finite() {
+                larger(x, T::zero())
+            } else {
+                full
+            };
             let speed = if cs > T::zero() {
                 sn / cs / root_c
             } else {
