@@ -513,7 +513,10 @@ fn run<'s, T: Real, R: Rhs<T>>(
 /// A ball launched at or below the horizon from the landing height with a ground in the
 /// scene (a topped shot): its first contact is the launch itself, at `t = 0`. Carry, apex
 /// height above the launch and flight time are zero; the landing angle and speed are the
-/// launch's; the run-out starts on a ground plane through the launch point.
+/// launch's; the run-out starts on a ground plane through the launch point. Out of line
+/// and cold: it must not change the code of the common flight.
+#[cold]
+#[inline(never)]
 fn into_the_ground<T: Real>(
     scene: &PreparedScene<T>,
     ground: &crate::ground::PreparedGround<T>,
