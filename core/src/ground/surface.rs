@@ -4,14 +4,16 @@
 //!
 //! ```text
 //! e₀   restitution at vanishing normal speed: e(v_n) = (e₀/0.510)·e_Penner(v_n)
-//! μ    ball–turf Coulomb friction during a bounce          (Penner 2002: 0.40)
-//! ρ    rolling resistance: a roll decelerates at (5/7)·ρ·g (Penner 2002: 0.131 on a green)
+//! μ    ball–turf Coulomb friction during a bounce and a skid (Penner 2002: 0.40)
+//! ρ    rolling resistance at low speed ρ₀: a roll decelerates at (5/7)·ρ₀(1 + c v²)·g,
+//!      the grass drag growing with speed (c = GRASS_DRAG_S2PM2; Penner 2002: ρ₀ = 0.131
+//!      on a green)
 //! κ    crater scale: the turf's crater tilts the impact by κ·θ_c (Penner 2002: κ = 1)
 //! ```
 //!
 //! On a green ρ comes from the stimpmeter: the stimpmeter releases the ball at
 //! `v₀ = 1.83 m/s` (Holmes 1986; Penner 2002, "The physics of putting") and it rolls the
-//! stimp reading S, so `(5/7)ρg = v₀²/(2S)`.
+//! stimp reading S, so `S = ln(1 + c v₀²)/(2·(5/7)ρ₀g·c)`.
 
 use crate::error::{Error, Field, Reason, Result};
 use crate::real::{Real, lit};
@@ -40,7 +42,8 @@ pub const MAX_TURF_COEFFICIENT: f64 = 10.0;
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub enum Surface<T: Real> {
-    /// A firm, fast fairway (rolls like a stimp-8 green; Penner's green bounce).
+    /// A firm, fast fairway (Penner's green bounce; rolling resistance [`FAIRWAY_ROLLING_RESISTANCE`],
+    /// calibrated to TrackMan's 2010 driver chart).
     FairwayFirm,
     /// A soft, watered fairway (stimp-5 roll, 80 % of the restitution, deeper crater).
     FairwaySoft,
@@ -64,7 +67,8 @@ pub struct Turf<T> {
     pub restitution: T,
     /// Ball–turf friction coefficient μ during a bounce, ≥ 0.
     pub friction: T,
-    /// Rolling resistance ρ (the roll decelerates at (5/7)ρg), ≥ 0.
+    /// Rolling resistance at low speed ρ₀ (the roll decelerates at (5/7)ρ₀(1 + c v²)g,
+    /// [`GRASS_DRAG_S2PM2`]), ≥ 0.
     pub rolling_resistance: T,
     /// Crater scale κ (multiplies Penner's crater angle), ≥ 0.
     pub crater_scale: T,
