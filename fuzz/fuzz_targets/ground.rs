@@ -2,7 +2,8 @@
 //! turf with any values, NaN and absurd ones included), any slope, wind and integrator,
 //! after a golf-like flight; and single bounces with any velocity and spin. A success
 //! must be finite and physical: the run ends at rest or at the roll time cap, after the
-//! landing, within the bounce budget, and a bounce never adds energy.
+//! landing, within the bounce budget, and a bounce never adds energy. Launches below the
+//! horizon (topped shots, issue 21) run out from the launch point.
 #![no_main]
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
@@ -79,7 +80,9 @@ fn run<T: Real>(b: &mut Bytes<'_>) -> Result<()> {
     }
     let launch = Launch::<T> {
         ball_speed_mps: lit(b.param(5.0, 90.0)),
-        launch_angle_rad: lit(b.param(0.05, 1.4)),
+        // Below the horizon too: from at or below the landing height a topped shot meets
+        // the ground at once and runs out from the launch (issue 21).
+        launch_angle_rad: lit(b.param(-0.3, 1.4)),
         launch_direction_rad: lit(b.param(-0.3, 0.3)),
         backspin_radps: lit(b.param(-300.0, 1300.0)),
         sidespin_radps: lit(b.param(-400.0, 400.0)),

@@ -272,9 +272,15 @@ pub struct SceneArgs {
     /// Wind profile exponent k in w(h) = w_ref·(h/h_ref)^k (default 1/7).
     #[arg(long, value_name = "K", value_parser = finite, allow_hyphen_values = true)]
     pub wind_exponent: Option<f64>,
-    /// Height of the landing area relative to the tee [m | ft] (default 0; + uphill).
+    /// Height of the landing area relative to the turf at the tee [m | ft] (default 0; +
+    /// uphill).
     #[arg(long, value_name = "H", value_parser = finite, allow_hyphen_values = true)]
     pub landing_height: Option<f64>,
+    /// Height of the ball above the turf at launch: a tee [m | ft] (default 0, the ball on
+    /// the turf). Carry is measured down to the landing height; TrackMan's "carry flat" is
+    /// to the launch height (a tee height of 0)
+    #[arg(long, value_name = "H", value_parser = finite, allow_hyphen_values = true)]
+    pub tee_height: Option<f64>,
     /// Give up if the ball has not landed after this long [s] (default 60).
     #[arg(long, value_name = "S", value_parser = finite, allow_hyphen_values = true)]
     pub time_limit: Option<f64>,
@@ -636,6 +642,7 @@ impl SceneArgs {
         put(p, u, Key::WindReferenceHeight, self.wind_reference_height);
         put(p, u, Key::WindExponent, self.wind_exponent);
         put(p, u, Key::LandingHeight, self.landing_height);
+        put(p, u, Key::TeeHeight, self.tee_height);
         put(p, u, Key::TimeLimit, self.time_limit);
         if let Some(aero) = &self.aero {
             let model = Key::Aero.parse(aero)?;

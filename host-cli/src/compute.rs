@@ -452,12 +452,15 @@ pub fn run_in_scene<T: Real>(
             }
         };
         let integrator = n.integrator::<T>();
+        let into_ground = |e: carry_core::Error| into_the_ground(e, &motion, scene);
         let outcome = match trace {
-            None => scene.fly(&motion, &integrator, None)?,
+            None => scene.fly(&motion, &integrator, None).map_err(into_ground)?,
             Some(points) => {
                 let mut buffer = Box::new(heapless::Vec::<Sample<T>, TRACE_CAPACITY>::new());
                 let mut recorder = Recorder::new(lit(TRACE_INTERVAL_S), &mut *buffer)?;
-                let outcome = scene.fly(&motion, &integrator, Some(&mut recorder))?;
+                let outcome = scene
+                    .fly(&motion, &integrator, Some(&mut recorder))
+                    .map_err(into_ground)?;
                 points.clear();
                 points.extend(recorder.samples().iter().map(|s| f3(&s.position_m)));
                 outcome
@@ -471,6 +474,25 @@ pub fn run_in_scene<T: Real>(
         impulse_ns: impulse,
         flight,
     })
+}
+
+/// A clear message for a launch at or below the horizon from the landing height without
+/// a ground (the core's [`carry_core::Error::NoLanding`]); other errors as they are.
+fn into_the_ground<T: Real>(
+    e: carry_core::Error,
+    motion: &BallMotion<T>,
+    scene: &PreparedScene<T>,
+) -> InputError {
+    if e == carry_core::Error::NoLanding
+        && motion.velocity_mps.y <= T::zero()
+        && scene.ground().is_none()
+    {
+        return InputError::new(
+            "launch_angle",
+            "launched at or below the horizon, the ball meets the ground at once and never flies: give it a ground to bounce and roll on (e.g. --ground fairway), or a tee (--tee-height)",
+        );
+    }
+    e.into()
 }
 
 /// Runs `mode` on `p` in the precision `n` asks for.

@@ -112,6 +112,8 @@ pub struct SceneParams {
     pub wind_exponent: Option<f64>,
     /// Landing height (m).
     pub landing_height_m: Option<f64>,
+    /// Tee height: the ball's start above the turf (m).
+    pub tee_height_m: Option<f64>,
     /// Flight time limit (s).
     pub time_limit_s: Option<f64>,
     /// Disable drag.
@@ -313,6 +315,7 @@ keys! {
     WindReferenceHeight = "wind_reference_height", Number, Height;
     WindExponent = "wind_exponent", Number, Plain;
     LandingHeight = "landing_height", Number, Height;
+    TeeHeight = "tee_height", Number, Height;
     TimeLimit = "time_limit", Number, Plain;
     NoDrag = "no_drag", Bool, Plain;
     NoLift = "no_lift", Bool, Plain;
@@ -444,6 +447,7 @@ impl Key {
                     Key::WindReferenceHeight => s.wind_reference_height_m = Some(x),
                     Key::WindExponent => s.wind_exponent = Some(x),
                     Key::LandingHeight => s.landing_height_m = Some(x),
+                    Key::TeeHeight => s.tee_height_m = Some(x),
                     Key::TimeLimit => s.time_limit_s = Some(x),
                     Key::Stimp => s.ground.stimp_ft = Some(x),
                     Key::GroundSlope => s.ground.slope_deg = Some(x),

@@ -40,6 +40,7 @@ pub const SCENE_KEYS: &[Key] = &[
     Key::WindReferenceHeight,
     Key::WindExponent,
     Key::LandingHeight,
+    Key::TeeHeight,
     Key::TimeLimit,
     Key::NoDrag,
     Key::NoLift,
@@ -157,6 +158,15 @@ pub fn build<T: Real>(s: &SceneParams) -> Result<Scene<T>, InputError> {
     };
     if let Some(h) = s.landing_height_m {
         scene.landing_height_m = lit(h);
+    }
+    if let Some(h) = s.tee_height_m {
+        if !(h >= 0.0) {
+            return Err(InputError::new(
+                "tee_height",
+                "must not be negative (the ball starts on or above the turf)",
+            ));
+        }
+        scene.launch_position_m.y = lit(h);
     }
     if let Some(t) = s.time_limit_s {
         scene.time_limit_s = lit(t);

@@ -188,3 +188,42 @@ fn plot_draws_the_run_out() {
     );
     assert!(std::fs::metadata(&out).expect("svg").len() > 1000);
 }
+
+/// Issue 21: a launch below the horizon meets the ground at once: with a ground it has a
+/// total (carry 0); without one it is one line naming the launch angle, status 2. A tee
+/// lifts the start; a negative tee height is refused.
+#[test]
+fn topped_launches_run_out_or_say_why() {
+    let out = json(&[
+        "flight",
+        "--json",
+        "--launch-angle",
+        "-2",
+        "--ground",
+        "fairway",
+    ]);
+    let f = &out["flight"];
+    assert_eq!(f["carry_m"].as_f64(), Some(0.0));
+    let total = f["total_m"].as_f64().expect("a total");
+    assert!(total > 10.0, "{total}");
+    let (code, stdout, err) = run(&["flight", "--launch-angle", "-2"]);
+    assert_eq!(code, 2);
+    assert!(stdout.is_empty());
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(
+        err.contains("--launch-angle") && err.contains("--ground"),
+        "{err}"
+    );
+    let teed = json(&[
+        "flight",
+        "--json",
+        "--launch-angle",
+        "-2",
+        "--tee-height",
+        "0.05",
+    ]);
+    assert!(teed["flight"]["carry_m"].as_f64().expect("carry") > 0.0);
+    let (code, _, err) = run(&["flight", "--tee-height", "-0.1"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("--tee-height"), "{err}");
+}

@@ -21,6 +21,7 @@ pub mod aero_file;
 pub mod dispersion;
 pub mod error;
 pub mod fit;
+pub mod ground_fit;
 pub mod normalize;
 pub mod optimize;
 pub mod setup;

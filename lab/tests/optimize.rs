@@ -188,3 +188,45 @@ fn total_distance_on_a_ground_is_at_least_the_carry_at_its_optimum() {
     // The roll favours a lower, flatter shot: the total optimum has no more loft.
     assert!(total.point.dynamic_loft_deg <= carry.point.dynamic_loft_deg + 0.1);
 }
+
+/// Issue 21: at 75 mph with attack 0 the total's optimum is a loft a fitter would
+/// recognise (TrackMan's 2010 chart: 19.2° of dynamic loft for 178 yd), because a line
+/// drive's shallow landing no longer rolls 100 yd; issue 12's ground chose 8.5°.
+#[test]
+fn the_totals_optimum_at_75_mph_is_a_fitters_loft() {
+    use carry_core::air::{Pressure, Weather};
+    use carry_core::ground::{Ground, Surface};
+    let preset: &Preset = Preset::find("driver").unwrap_or(&PRESETS[0]);
+    let base = match Setup::standard(preset, 75.0 * 0.447_04) {
+        Ok(s) => s.smooth(),
+        Err(e) => panic!("{e}"),
+    };
+    let scene = carry_core::Scene {
+        air: carry_core::Air::Weather(Weather {
+            temperature_c: 21.1,
+            relative_humidity: 0.5,
+            pressure: Pressure::Pa(101_325.0),
+        }),
+        ground: Some(Ground::level(Surface::FairwayFirm)),
+        ..carry_core::Scene::default()
+    };
+    let Ok(prepared) = scene.prepare(&base.ball) else {
+        panic!("scene")
+    };
+    let setup = Setup {
+        scene: prepared,
+        ..base
+    };
+    let mut options = Options::carry(range(4.0, 30.0), range(0.0, 0.0));
+    options.objective = Objective::Total;
+    let Ok(best) = optimize(&setup, &options) else {
+        panic!("total")
+    };
+    let loft = best.point.dynamic_loft_deg;
+    let total_yd = best.objective_value / 0.9144;
+    assert!((14.0..=21.0).contains(&loft), "dynamic loft {loft:.2}°");
+    assert!(
+        (total_yd / 178.0 - 1.0).abs() < 0.1,
+        "total {total_yd:.1} yd against the chart's 178"
+    );
+}

@@ -380,3 +380,92 @@ proptest! {
         prop_assert!((a.z + b.z).abs() <= 1e-6 * scale, "{a} vs {b}");
     }
 }
+
+/// Issue 21: a ball launched at or below the horizon from the turf meets the ground at
+/// once on a ground (carry 0, the run-out from the launch) and is `NoLanding` without one;
+/// a topped drive totals what TrackMan's do (50–135 yd), far short of a struck drive.
+fn topped<T: Real>() {
+    let fairway = Ground::level(Surface::<T>::FairwayFirm);
+    for (speed, angle, spin) in [
+        (80.0, -2.0, 300.0),
+        (100.0, 0.0, 1000.0),
+        (120.0, -1.0, 500.0),
+    ] {
+        let m = launch::<T>(speed, angle, 0.0, spin, 0.0);
+        let Ok(out) = fly(
+            &Ball::standard(),
+            &m,
+            &Scene {
+                ground: Some(fairway),
+                ..Scene::default()
+            },
+            &Integrator::default(),
+            None,
+        ) else {
+            panic!("topped {speed} mph {angle}°")
+        };
+        assert_eq!(out.carry_m, T::zero());
+        assert_eq!(out.flight_time_s, T::zero());
+        let g = out.ground.expect("a rollout");
+        let total = carry_core::real::to_f64(g.total_m) / YD;
+        assert!(
+            (50.0..=140.0).contains(&total),
+            "{speed} mph {angle}°: {total:.1} yd"
+        );
+        assert_eq!(g.end, RunEnd::Rest);
+        let bare = fly(
+            &Ball::standard(),
+            &m,
+            &Scene::default(),
+            &Integrator::default(),
+            None,
+        );
+        assert_eq!(bare.err(), Some(Error::NoLanding));
+    }
+    // On a tee the same launch flies a little first, then runs out.
+    let m = launch::<T>(100.0, -2.0, 0.0, 1000.0, 0.0);
+    let teed = Scene {
+        launch_position_m: Vector3::new(T::zero(), nalgebra::convert(0.05), T::zero()),
+        ground: Some(fairway),
+        ..Scene::default()
+    };
+    let Ok(out) = fly(&Ball::standard(), &m, &teed, &Integrator::default(), None) else {
+        panic!("teed")
+    };
+    assert!(out.carry_m > T::zero() && out.ground.expect("a rollout").total_m > out.carry_m);
+}
+
+#[test]
+fn topped_shots_f64() {
+    topped::<f64>();
+}
+
+#[test]
+fn topped_shots_f32() {
+    topped::<f32>();
+}
+
+/// Issue 21: shallow landings no longer run away. The issue's example (101.5 mph, 8.1°,
+/// 2,626 rpm: lands near 15°, TrackMan 40 yd of roll; issue 12's ground gave 97) rolls
+/// under 60 yd, and a drive's roll falls as its landing steepens.
+#[test]
+fn shallow_landings_roll_like_trackmans() {
+    let m = launch::<f64>(101.5, 8.1, 0.0, 2626.0, 0.0);
+    let (roll, out) = roll_yd(&m, Ground::level(Surface::FairwayFirm));
+    assert!(out.landing_angle_rad.to_degrees() < 16.0);
+    assert!((25.0..60.0).contains(&roll), "{roll:.1} yd");
+    let mut last = f64::INFINITY;
+    for (angle, spin) in [
+        (8.1, 2626.0),
+        (12.0, 3000.0),
+        (16.0, 4500.0),
+        (26.0, 8000.0),
+    ] {
+        let (r, _) = roll_yd(
+            &launch::<f64>(130.0, angle, 0.0, spin, 0.0),
+            Ground::level(Surface::FairwayFirm),
+        );
+        assert!(r < last, "{angle}°: {r:.1} yd after {last:.1}");
+        last = r;
+    }
+}

@@ -99,3 +99,43 @@ fn unstable_fixed_steps_are_errors() {
         assert_eq!(out, Err(Error::Unstable), "{integrator:?}");
     }
 }
+
+/// Issue 21's fuzzing: a ball barely moving with 1,200 rad/s of backspin on a nearly
+/// frictionless, resistance-free turf skidded for the whole time cap, gripped, and rolled
+/// on; the level roll's closed form `ln cos(θ₀ − kτ) − ln cos θ₀` cancelled
+/// catastrophically for a resistance of 1e-300 and put the ball at −9·10²⁹¹ m. (The fuzz
+/// input is fuzz/corpus/ground/issue21-frictionless-skid.)
+#[test]
+fn issue_21_frictionless_skid_stays_finite() {
+    let motion = BallMotion::<f64> {
+        velocity_mps: Vector3::new(1e-300, 0.0, 0.0),
+        spin_radps: Vector3::new(-1.2e-297, -0.5676, 1204.54),
+    };
+    let turf = carry_core::Turf {
+        restitution: 0.45,
+        friction: 1e-300,
+        rolling_resistance: 1e-300,
+        crater_scale: 1e-300,
+    };
+    let scene = Scene::<f64> {
+        landing_height_m: -8.4e-308,
+        ground: Some(Ground {
+            surface: Surface::Custom(turf),
+            normal: Vector3::new(1e-300, 1.0, 1e-300),
+        }),
+        ..Scene::default()
+    };
+    let out = fly(
+        &Ball::standard(),
+        &motion,
+        &scene,
+        &Integrator::default(),
+        None,
+    );
+    let Ok(out) = out else { panic!("{out:?}") };
+    let g = out.ground.expect("a rollout");
+    assert!(g.total_m.is_finite() && g.rest_position_m.iter().all(|x| x.is_finite()));
+    // At most the gripped speed (2/7 of a 25.7 m/s slip) for the minute's cap.
+    assert!(g.total_m < 7.5 * 60.0, "{g:?}");
+    assert!(g.time_to_rest_s <= 60.0 + 1e-9, "{g:?}");
+}

@@ -372,7 +372,9 @@ pub struct FlightOutcome<T: Real> {
 /// density, humidity outside [0, 1], landing height not finite, non-positive step or
 /// tolerance, a launch faster than [`MAX_BALL_SPEED_MPS`] or spinning faster than
 /// [`MAX_SPIN_RADPS`]); [`Error::NoLanding`] when the ball never comes down through the landing
-/// height; [`Error::TimeLimit`]; [`Error::StepSizeUnderflow`] when the adaptive step cannot
+/// height (a launch at or below the horizon from the landing height, unless the scene has
+/// a ground: the ball then meets the turf at once, a topped shot, and bounces and rolls);
+/// [`Error::TimeLimit`]; [`Error::StepSizeUnderflow`] when the adaptive step cannot
 /// meet the tolerance (also for `rtol` below 4ε of `T`); [`Error::Unstable`] when a fixed step diverges (grows faster than the dynamics allow).
 pub fn fly<T: Real>(
     ball: &Ball<T>,
@@ -427,7 +429,11 @@ fn run<'s, T: Real, R: Rhs<T>>(
     let y0: State<T> = [p0.x, p0.y, p0.z, v0.x, v0.y, v0.z, spin];
     if y0[Y] <= scene.landing_height && v0.y <= T::zero() {
         // At or below the landing height and not rising: it never comes down through it.
-        return Err(Error::NoLanding);
+        // On a ground it meets the turf at once (a topped shot) and bounces and rolls.
+        return match &scene.ground {
+            None => Err(Error::NoLanding),
+            Some(g) => into_the_ground(scene, g, &launch, axis, spin, method, recorder),
+        };
     }
     let rhs = make(Dynamics { scene, axis });
     let mut recorder = recorder;
@@ -501,6 +507,69 @@ fn run<'s, T: Real, R: Rhs<T>>(
         stats,
         recording_full: recorder.is_some_and(|r| r.is_full()),
         ground,
+    })
+}
+
+/// A ball launched at or below the horizon from the landing height with a ground in the
+/// scene (a topped shot): its first contact is the launch itself, at `t = 0`. Carry, apex
+/// height above the launch and flight time are zero; the landing angle and speed are the
+/// launch's; the run-out starts on a ground plane through the launch point. Out of line
+/// and cold: it must not change the code of the common flight.
+#[cold]
+#[inline(never)]
+fn into_the_ground<T: Real>(
+    scene: &PreparedScene<T>,
+    ground: &crate::ground::PreparedGround<T>,
+    launch: &BallMotion<T>,
+    axis: Vector3<T>,
+    spin: T,
+    method: Method<T>,
+    recorder: Option<&mut Recorder<'_, T>>,
+) -> Result<FlightOutcome<T>> {
+    let mut recorder = recorder;
+    let p0 = scene.launch_position;
+    let velocity = launch.velocity_mps;
+    let first = Contact {
+        time: T::zero(),
+        position: p0,
+        velocity,
+        spin: axis * spin,
+    };
+    if let Some(r) = recorder.as_deref_mut() {
+        r.reset();
+        r.push(Sample {
+            time_s: T::zero(),
+            position_m: p0,
+            velocity_mps: velocity,
+            spin_radps: first.spin,
+        });
+    }
+    let hopper = Hops { scene, method };
+    let rollout = crate::ground::run_out(
+        ground,
+        scene.gravity,
+        &p0,
+        &first,
+        &hopper,
+        recorder.as_deref_mut(),
+    )?;
+    Ok(FlightOutcome {
+        carry_m: T::zero(),
+        carry_x_m: T::zero(),
+        side_m: T::zero(),
+        apex_m: p0.y,
+        apex_time_s: T::zero(),
+        flight_time_s: T::zero(),
+        landing_angle_rad: (-velocity.y).atan2(velocity.x.hypot(velocity.z)),
+        landing_speed_mps: velocity.norm(),
+        landing_spin_radps: spin,
+        landing_position_m: p0,
+        landing_velocity_mps: velocity,
+        landing_spin_vector_radps: first.spin,
+        air_density_kgm3: scene.density,
+        stats: Stats::default(),
+        recording_full: recorder.is_some_and(|r| r.is_full()),
+        ground: Some(rollout),
     })
 }
 

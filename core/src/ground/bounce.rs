@@ -5,7 +5,7 @@
 //! impact speed `v`, angle from the normal `φ`):
 //!
 //! ```text
-//! crater tilt        θ_c = κ · 15.4° · (v / 18.6 m/s) · (φ / 44.4°) · min(1, v_n / 13.29 m/s),
+//! crater tilt        θ_c = κ · 15.4° · (v / 18.6 m/s) · (φ / 44.4°) · min(1, v_n / 8 m/s),
 //!                    clamped to [0, φ]
 //! tilted components  u = v_t cos θ_c − v_n sin θ_c,   v_n' = v_t sin θ_c + v_n cos θ_c
 //! restitution        e = (e₀/0.510) · (0.510 − 0.0375 v_n' + 0.000903 v_n'²)  (v_n' ≤ 20 m/s)
@@ -18,11 +18,12 @@
 //! ```
 //!
 //! The last factor of θ_c is ours: Penner fitted the crater law to landings (Haake's
-//! measurements near 18.6 m/s, 44.4°, normal speed 13.29 m/s) and it is unchanged for
-//! landings at that normal speed or more (a driver's, a wedge's). Extrapolated to the
-//! grazing impacts of a ball already running out it would predict a crater for a rolling
-//! ball, which then skips along in centimetre hops for tens of metres; a grazing ball barely
-//! dents the turf, so the tilt fades with the normal speed.
+//! measurements near 18.6 m/s, 44.4°) and it is unchanged for landings at a normal speed
+//! of 8 m/s or more (a driver's, a wedge's). Extrapolated to the grazing impacts of a ball
+//! already running out it would predict a crater for a rolling ball, which then skips
+//! along in hops for tens of metres; a grazing ball barely dents the turf, so the tilt
+//! fades with the normal speed below [`CRATER_FADE_NORMAL_SPEED_MPS`] (calibrated on
+//! shallow landings, docs/ground.md).
 //!
 //! Penner's turf-crater law and e(v_n) were fitted to Haake's measurements on greens; the
 //! roll/slide split is Daish's rigid-sphere impact with Coulomb friction, here with the
@@ -42,9 +43,12 @@ const CRATER_REFERENCE_RAD: f64 = 15.4 * core::f64::consts::PI / 180.0;
 const CRATER_REFERENCE_SPEED_MPS: f64 = 18.6;
 /// Reference impact angle from the normal of the crater law (rad): 44.4°.
 const CRATER_REFERENCE_ANGLE_RAD: f64 = 44.4 * core::f64::consts::PI / 180.0;
-/// Normal speed of Penner's reference impact, 18.6 m/s · cos 44.4° (m/s): below it the
-/// crater tilt fades out linearly.
-const CRATER_REFERENCE_NORMAL_SPEED_MPS: f64 = 13.29;
+/// Normal speed below which the crater tilt fades out linearly (m/s). Issue 12 took
+/// Penner's reference impact's, 18.6 m/s · cos 44.4° = 13.29 m/s; 8 m/s matches
+/// TrackMan's roll after shallow landings (a 14° landing at 27 m/s rolls 40 yd, and the
+/// issue-21 band figures; the sweep is in docs/ground.md). Landings steeper than about
+/// 25° have a normal speed above it and are unaffected.
+pub const CRATER_FADE_NORMAL_SPEED_MPS: f64 = 8.0;
 /// Normal speed above which Penner's restitution is constant (m/s).
 const RESTITUTION_KNEE_MPS: f64 = 20.0;
 
@@ -134,10 +138,7 @@ pub(crate) fn rebound<T: Real>(
     let per_speed_angle =
         lit::<T>(CRATER_REFERENCE_RAD / (CRATER_REFERENCE_SPEED_MPS * CRATER_REFERENCE_ANGLE_RAD));
     // Faded out below the reference normal speed (see the module docs).
-    let fade = smaller(
-        vn * lit::<T>(1.0 / CRATER_REFERENCE_NORMAL_SPEED_MPS),
-        T::one(),
-    );
+    let fade = smaller(vn * lit::<T>(1.0 / CRATER_FADE_NORMAL_SPEED_MPS), T::one());
     let tilt = turf.crater_scale * per_speed_angle * speed * fade * phi;
     let tilt = larger(smaller(tilt, phi), T::zero());
     let (s, c) = crate::geometry::sin_cos_small(tilt);

@@ -423,11 +423,11 @@ pub(crate) fn run_out<T: Real, H: Hopper<T>>(
     let form = HopForces::for_wind(hopper.wind_varies());
     let mut at = *first;
     let mut bounces = 0_u32;
-    let roll_velocity = loop {
+    let (roll_velocity, roll_spin) = loop {
         let r = bounce::rebound(&at.velocity, &at.spin, &n, &ground.turf, ground.radius);
         let vn = r.normal_speed_mps;
         if !(vn > T::zero() && vn * vn >= hop_speed_sq) || bounces >= MAX_BOUNCES {
-            break r.velocity_mps - n * vn;
+            break (r.velocity_mps - n * vn, r.spin_radps);
         }
         bounces += 1;
         let from = Contact {
@@ -447,18 +447,20 @@ pub(crate) fn run_out<T: Real, H: Hopper<T>>(
         // Back onto the plane (the landing is on it to the root finder's accuracy).
         at.position -= n * (n.dot(&at.position) - plane.offset);
     };
-    if !roll_velocity.iter().all(|x| x.is_finite()) {
+    if !(roll_velocity.iter().all(|x| x.is_finite()) && roll_spin.iter().all(|x| x.is_finite())) {
         return Err(Error::Unstable);
     }
     let end = roll::Roll {
         normal: n,
         gravity: g_vec,
         resistance: ground.turf.rolling_resistance,
+        grass_drag: lit(surface::GRASS_DRAG_S2PM2),
+        friction: ground.turf.friction,
         radius: ground.radius,
         start_time: at.time,
         recorder,
     }
-    .run(at.position, roll_velocity);
+    .run(at.position, roll_velocity, &roll_spin);
     let rest = end.position;
     if !(rest.iter().all(|x| x.is_finite()) && end.duration.is_finite()) {
         return Err(Error::Unstable);

@@ -1,21 +1,34 @@
-//! Rolling on the ground plane until the ball rests (or a time cap).
+//! Skidding and rolling on the ground plane until the ball rests (or a time cap).
 //!
-//! A rolling solid sphere (`I = (2/5) m R²`) on a plane of unit normal `n̂` under gravity
-//! `g⃗` and a rolling resistance `ρ` (Penner 2002, "The physics of putting"):
+//! **Skid.** The bouncing can end with the contact still slipping (a shallow landing
+//! leaves the ground with backspin or overspin). The contact point's slip
+//! `s = v + ω × (−R n̂)` then closes under Coulomb friction `μ g_n` (the turf's bounce
+//! friction) at `(7/2)μ g_n − g⃗_t·ŝ` (a solid sphere: the friction slows the centre and
+//! turns the spin), during which the ball moves with `a = g⃗_t − μ g_n ŝ`. It leaves at
+//! the rolling speed `(5v − 2Rω_b)/7` on level ground (Daish; Penner 2002), having lost
+//! energy to friction.
+//!
+//! **Roll.** A rolling solid sphere (`I = (2/5) m R²`) on a plane of unit normal `n̂`
+//! under gravity `g⃗` and a rolling resistance that grows with speed, the grass drag:
 //!
 //! ```text
-//! a = (5/7) · (g⃗_t − ρ g_n v̂),     g⃗_t = g⃗ − (g⃗·n̂) n̂ (along the plane),  g_n = −g⃗·n̂
+//! a = (5/7) · (g⃗_t − ρ(v) g_n v̂),   ρ(v) = ρ₀ (1 + c v²),
+//! g⃗_t = g⃗ − (g⃗·n̂) n̂ (along the plane),  g_n = −g⃗·n̂
 //! ```
 //!
-//! On level ground (`g⃗_t = 0`) this is a constant deceleration along a straight line:
-//! closed form, `t = v/a`, `d = v²/(2a)`. On a slope the path curves and has no
-//! elementary closed form: it is integrated with the explicit midpoint rule at a fixed
-//! step [`ROLL_STEP_S`], and the stop is located inside the last step. The ball rests
-//! where the slope's pull is below the resistance, `|g⃗_t| ≤ ρ g_n`; on a steeper slope it
+//! (Penner 2002, "The physics of putting", as quoted in patents citing it:
+//! `ρ = (0.7028/S)(1 + 0.0065 v²)`, S in ft, v in ft/s; c = 0.070 s²/m²,
+//! [`super::surface::GRASS_DRAG_S2PM2`]). On level ground this is a straight line in
+//! closed form (`Roll::level`). On a slope the path curves and has no elementary closed
+//! form: a fixed step [`ROLL_STEP_S`], the slope's pull as two half kicks around the
+//! resistance's exact-in-direction update `s' = max(s − A h, 0)/(1 + B s h)` (Strang
+//! splitting; `A = (5/7)ρ₀g_n`, `B = A c`), which never gains speed or reverses the ball
+//! at any speed. The stop is located inside the last step. The ball rests where the
+//! slope's pull is below the resistance at rest, `|g⃗_t| ≤ ρ₀ g_n`; on a steeper slope it
 //! rolls on until [`ROLL_TIME_CAP_S`].
 
 use crate::flight::{Recorder, Sample};
-use crate::real::{Real, lit, smaller, to_f64};
+use crate::real::{Real, larger, lit, smaller, to_f64};
 use nalgebra::Vector3;
 
 /// The longest roll simulated (s): a ball still rolling then ends as
@@ -38,6 +51,10 @@ pub(crate) struct Roll<'r, 'b, T: Real> {
     pub(crate) normal: Vector3<T>,
     pub(crate) gravity: Vector3<T>,
     pub(crate) resistance: T,
+    /// The grass drag's growth with speed `c` (s²/m²): the resistance is `ρ₀(1 + c v²)`.
+    pub(crate) grass_drag: T,
+    /// Ball–turf friction while the ball skids.
+    pub(crate) friction: T,
     pub(crate) radius: T,
     /// Time since launch at the start of the roll (s), for the recording.
     pub(crate) start_time: T,
@@ -47,6 +64,16 @@ pub(crate) struct Roll<'r, 'b, T: Real> {
 impl<T: Real> Roll<'_, '_, T> {
     fn record(&mut self, time_since_start: T, position: Vector3<T>, velocity: Vector3<T>) {
         let spin = self.normal.cross(&velocity) / self.radius;
+        self.record_spinning(time_since_start, position, velocity, spin);
+    }
+
+    fn record_spinning(
+        &mut self,
+        time_since_start: T,
+        position: Vector3<T>,
+        velocity: Vector3<T>,
+        spin: Vector3<T>,
+    ) {
         if let Some(r) = self.recorder.as_deref_mut() {
             r.push(Sample {
                 time_s: self.start_time + time_since_start,
@@ -89,46 +116,140 @@ impl<T: Real> Roll<'_, '_, T> {
         }
     }
 
+    /// Skids from `p0` with the in-plane velocity `v0` and the spin `spin` until the
+    /// contact stops slipping (module docs): the position, velocity and duration at the
+    /// start of the pure roll.
+    ///
+    /// Fixed steps of [`ROLL_STEP_S`]: Coulomb friction `μ g_n` against the slip (on the
+    /// centre and, as a torque, on the spin) and the slope's pull for the step, then the
+    /// grass drag on the speed, `s' = max(s − A h, 0)/(1 + B s h)` with `A = ρ₀ g_n`,
+    /// `B = A c` (as the roll's, on the centre alone: a sliding ball need not turn).
+    /// Friction stops within the step where the slip would reverse; the last of the slip
+    /// goes in one gripping impulse `Δv = −(2/7)s`. Each part only takes energy (and the
+    /// pull gives what gravity gives).
+    fn skid(
+        &mut self,
+        p0: Vector3<T>,
+        v0: Vector3<T>,
+        spin: &Vector3<T>,
+    ) -> (Vector3<T>, Vector3<T>, T) {
+        let n = self.normal;
+        let g_n = -self.gravity.dot(&n);
+        let g_t = self.gravity + n * g_n;
+        let r = self.radius;
+        let in_plane = |x: Vector3<T>| x - n * x.dot(&n);
+        let slip_of = |v: &Vector3<T>, w: &Vector3<T>| in_plane(v - w.cross(&n) * r);
+        let grip = self.friction * g_n;
+        let (mut p, mut v, mut w) = (p0, v0, *spin);
+        let mut slip = slip_of(&v, &w);
+        let h = lit::<T>(ROLL_STEP_S);
+        let resist = self.resistance * g_n;
+        let drag = resist * self.grass_drag;
+        let spin_per_grip = lit::<T>(2.5) / r;
+        let mut t = T::zero();
+        let steps = (ROLL_TIME_CAP_S / ROLL_STEP_S) as u32;
+        for _ in 0..steps {
+            let size = slip.norm();
+            if !(size > T::zero() && grip > T::zero()) {
+                break;
+            }
+            let dir = slip / size;
+            // The slip closes at (7/2)μg_n less the slope's pull along it.
+            let closing = lit::<T>(3.5) * grip - g_t.dot(&dir);
+            if !(closing > T::zero()) {
+                break;
+            }
+            // Friction for at most the step, stopping where the slip would reverse.
+            let dt = smaller(size / closing, h);
+            let v1 = v + (g_t - dir * grip) * dt;
+            let w1 = w + n.cross(&dir) * (spin_per_grip * grip * dt);
+            // The grass drag on the speed (never a gain, never a reversal).
+            let speed = v1.norm();
+            let speed1 = larger(speed - resist * dt, T::zero()) / (T::one() + drag * speed * dt);
+            let v1 = if speed > T::zero() {
+                v1 * (speed1 / speed)
+            } else {
+                v1
+            };
+            let p1 = p + (v + v1) * (dt * lit(0.5));
+            let (pa, va, wa, ta) = (p, v, w, t);
+            if self.recorder.is_some() {
+                let mut last = t;
+                while let Some(ts) = self.next_sample_after(last) {
+                    if ts > t + dt {
+                        break;
+                    }
+                    let f = (ts - ta) / dt;
+                    self.record_spinning(
+                        ts,
+                        pa + (p1 - pa) * f,
+                        va + (v1 - va) * f,
+                        wa + (w1 - wa) * f,
+                    );
+                    last = ts;
+                }
+            }
+            p = p1;
+            v = in_plane(v1);
+            w = w1;
+            t += dt;
+            slip = slip_of(&v, &w);
+            if dt < h {
+                break;
+            }
+        }
+        // What is left of the slip goes in one gripping impulse (none if it closed).
+        let v = v - slip * lit::<T>(2.0 / 7.0);
+        (p, v, t)
+    }
+
+    /// Skids (while the contact slips) and rolls from `p0` with the in-plane velocity `v0`
+    /// and the spin `spin`.
+    pub(crate) fn run(mut self, p0: Vector3<T>, v0: Vector3<T>, spin: &Vector3<T>) -> RollEnd<T> {
+        let (p0, v0, skid) = self.skid(p0, v0, spin);
+        self.start_time += skid;
+        let mut end = self.roll(p0, v0, lit::<T>(ROLL_TIME_CAP_S) - skid);
+        end.duration += skid;
+        end
+    }
+
     /// Rolls from `p0` with the in-plane velocity `v0`.
-    pub(crate) fn run(mut self, p0: Vector3<T>, v0: Vector3<T>) -> RollEnd<T> {
+    fn roll(mut self, p0: Vector3<T>, v0: Vector3<T>, cap: T) -> RollEnd<T> {
         let n = self.normal;
         let g_n = -self.gravity.dot(&n);
         let g_t = self.gravity + n * g_n;
         let five_sevenths = lit::<T>(5.0 / 7.0);
+        // a(v) = A + B v² along −v̂: A = (5/7)ρ₀g_n, B = A·c.
         let resist = five_sevenths * self.resistance * g_n;
-        let cap = lit::<T>(ROLL_TIME_CAP_S);
+        let drag = resist * self.grass_drag;
+        let cap = larger(cap, T::zero());
         if g_t.norm_squared() == T::zero() {
             return self.level(p0, v0, resist, cap);
         }
         let pull = g_t * five_sevenths;
         let holds = g_t.norm() <= self.resistance * g_n;
         let h = lit::<T>(ROLL_STEP_S);
-        let accel = |v: &Vector3<T>| {
-            let s = v.norm();
-            if s > T::zero() {
-                pull - v * (resist / s)
-            } else {
-                pull
-            }
-        };
+        let half_h = h * lit(0.5);
         let (mut p, mut v) = (p0, v0);
         let mut t = T::zero();
-        let steps = (ROLL_TIME_CAP_S / ROLL_STEP_S) as u32;
+        // At most the time cap's steps (what the skid left of it, rounded up).
+        let steps = (to_f64(cap / h).min(ROLL_TIME_CAP_S / ROLL_STEP_S) + 0.999) as u32;
         for _ in 0..steps {
-            let s = v.norm();
-            if s <= resist * h && holds {
-                // Stops within this step: decelerate along the current direction.
-                let denom = if s > T::zero() {
-                    resist - pull.dot(&v) / s
-                } else {
-                    resist
-                };
-                let ts = if denom > T::zero() {
-                    smaller(s / denom, h)
+            // Half a kick of the slope's pull, the resistance over the whole step, half a
+            // kick (Strang splitting). The resistance on the speed alone,
+            // `s' = max(s − A h, 0)/(1 + B s h)`: second order in h, never a gain and
+            // never a reversal at any speed (an explicit step of `B v²` diverges above
+            // `v ≈ 1/(B h)`).
+            let va = v + pull * half_h;
+            let s = va.norm();
+            if holds && s <= resist * h {
+                // Stops within this step, where the pull cannot start it again.
+                let ts = if resist > T::zero() {
+                    smaller(s / resist, h)
                 } else {
                     h
                 };
-                let p1 = p + v * (ts * lit(0.5));
+                let p1 = p + va * (ts * lit(0.5));
                 t += ts;
                 self.record(t, p1, Vector3::zeros());
                 return RollEnd {
@@ -137,9 +258,10 @@ impl<T: Real> Roll<'_, '_, T> {
                     still_rolling: false,
                 };
             }
-            let vm = v + accel(&v) * (h * lit(0.5));
-            let v1 = v + accel(&vm) * h;
-            let p1 = p + vm * h;
+            let s1 = larger(s - resist * h, T::zero()) / (T::one() + drag * s * h);
+            let vb = if s > T::zero() { va * (s1 / s) } else { va };
+            let p1 = p + (va + vb) * half_h;
+            let v1 = vb + pull * half_h;
             let (p0s, v0s, t0) = (p, v, t);
             self.record_span(t0, t0 + h, |ts| {
                 let f = (ts - t0) / h;
@@ -160,7 +282,15 @@ impl<T: Real> Roll<'_, '_, T> {
         }
     }
 
-    /// Level ground: `x(τ) = p₀ + v̂ (u τ − a τ²/2)` until `τ = u/a`.
+    /// Level ground, in closed form. With `a(v) = A + B v²`, `k = √(AB)`,
+    /// `θ₀ = atan(v₀√(B/A))`:
+    ///
+    /// ```text
+    /// v(τ) = √(A/B)·tan(θ₀ − kτ),   x(τ) = ln(cos(θ₀ − kτ)/cos θ₀)/B,
+    /// stops at τ = θ₀/k after ln(1 + B v₀²/A)/(2B)
+    /// ```
+    ///
+    /// (`B = 0`: `v = v₀ − Aτ`, `x = v₀τ − Aτ²/2`).
     fn level(mut self, p0: Vector3<T>, v0: Vector3<T>, resist: T, cap: T) -> RollEnd<T> {
         let u = v0.norm();
         if !(u > T::zero()) {
@@ -172,6 +302,73 @@ impl<T: Real> Roll<'_, '_, T> {
             };
         }
         let dir = v0 / u;
+        let c = self.grass_drag;
+        if !(resist > T::zero() && c > T::zero()) {
+            return self.level_constant(p0, dir, u, resist, cap);
+        }
+        let root_c = c.sqrt();
+        let w = u * root_c;
+        let k = resist * root_c;
+        let theta0 = crate::geometry::atan2_first_quadrant(w, T::one());
+        let stop = theta0 / k;
+        // x = ln(1 + w²)/(2Ac); for a huge w as 2 ln w (no overflow of w²).
+        let per_b = T::one() / (resist * c);
+        let full = if w < lit(1.0e4) {
+            (w * w).ln_1p()
+        } else {
+            w.ln() * lit(2.0)
+        } * (per_b * lit(0.5));
+        let state = move |tau: T| {
+            let (sn, cs) = (theta0 - k * tau).sin_cos();
+            // cos(θ₀ − kτ)/cos θ₀ = cos kτ + w sin kτ = 1 + w sin kτ − 2 sin²(kτ/2): the
+            // logarithm from ln_1p, exact for a tiny kτ too (a nearly frictionless turf,
+            // where ln cos(θ₀ − kτ) − ln cos θ₀ would cancel catastrophically).
+            let half = (k * tau * lit(0.5)).sin();
+            let x = (w * (k * tau).sin() - half * half * lit(2.0)).ln_1p() * per_b;
+            let x = if x.is_finite() {
+                larger(x, T::zero())
+            } else {
+                full
+            };
+            let speed = if cs > T::zero() {
+                sn / cs / root_c
+            } else {
+                T::zero()
+            };
+            (x, larger(speed, T::zero()))
+        };
+        let (end, still_rolling) = if stop <= cap {
+            (stop, false)
+        } else {
+            (cap, true)
+        };
+        self.record_span(T::zero(), end, |ts| {
+            let (x, s) = state(ts);
+            (p0 + dir * x, dir * s)
+        });
+        let (x, s) = if still_rolling {
+            state(end)
+        } else {
+            (full, T::zero())
+        };
+        let position = p0 + dir * x;
+        self.record(end, position, dir * s);
+        RollEnd {
+            position,
+            duration: end,
+            still_rolling,
+        }
+    }
+
+    /// Level ground at a constant resistance: `x(τ) = p₀ + v̂ (u τ − a τ²/2)` until `τ = u/a`.
+    fn level_constant(
+        mut self,
+        p0: Vector3<T>,
+        dir: Vector3<T>,
+        u: T,
+        resist: T,
+        cap: T,
+    ) -> RollEnd<T> {
         let stop = if resist > T::zero() { u / resist } else { cap };
         let (end, still_rolling) = if stop <= cap {
             (stop, false)

@@ -4,14 +4,16 @@
 //!
 //! ```text
 //! e₀   restitution at vanishing normal speed: e(v_n) = (e₀/0.510)·e_Penner(v_n)
-//! μ    ball–turf Coulomb friction during a bounce          (Penner 2002: 0.40)
-//! ρ    rolling resistance: a roll decelerates at (5/7)·ρ·g (Penner 2002: 0.131 on a green)
+//! μ    ball–turf Coulomb friction during a bounce and a skid (Penner 2002: 0.40)
+//! ρ    rolling resistance at low speed ρ₀: a roll decelerates at (5/7)·ρ₀(1 + c v²)·g,
+//!      the grass drag growing with speed (c = GRASS_DRAG_S2PM2; Penner 2002: ρ₀ = 0.131
+//!      on a green)
 //! κ    crater scale: the turf's crater tilts the impact by κ·θ_c (Penner 2002: κ = 1)
 //! ```
 //!
 //! On a green ρ comes from the stimpmeter: the stimpmeter releases the ball at
 //! `v₀ = 1.83 m/s` (Holmes 1986; Penner 2002, "The physics of putting") and it rolls the
-//! stimp reading S, so `(5/7)ρg = v₀²/(2S)`.
+//! stimp reading S, so `S = ln(1 + c v₀²)/(2·(5/7)ρ₀g·c)`.
 
 use crate::error::{Error, Field, Reason, Result};
 use crate::real::{Real, lit};
@@ -29,6 +31,10 @@ pub const STIMP_RANGE_M: (f64, f64) = (FOOT_M, 30.0 * FOOT_M);
 pub const PENNER_RESTITUTION_0: f64 = 0.510;
 /// Penner's ball–turf friction coefficient (2002).
 pub const PENNER_FRICTION: f64 = 0.40;
+/// The firm fairway's rolling resistance at low speed ρ₀, calibrated to TrackMan's 2010
+/// driver chart (roll = total − carry on "a typical fairway"; `carry_lab::ground_fit`,
+/// docs/ground.md): it rolls like a stimp-11 green at putting speeds.
+pub const FAIRWAY_ROLLING_RESISTANCE: f64 = 0.063;
 /// Largest accepted friction coefficient, rolling resistance and crater scale.
 pub const MAX_TURF_COEFFICIENT: f64 = 10.0;
 
@@ -36,7 +42,8 @@ pub const MAX_TURF_COEFFICIENT: f64 = 10.0;
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub enum Surface<T: Real> {
-    /// A firm, fast fairway (rolls like a stimp-8 green; Penner's green bounce).
+    /// A firm, fast fairway (Penner's green bounce; rolling resistance [`FAIRWAY_ROLLING_RESISTANCE`],
+    /// calibrated to TrackMan's 2010 driver chart).
     FairwayFirm,
     /// A soft, watered fairway (stimp-5 roll, 80 % of the restitution, deeper crater).
     FairwaySoft,
@@ -60,17 +67,26 @@ pub struct Turf<T> {
     pub restitution: T,
     /// Ball–turf friction coefficient μ during a bounce, ≥ 0.
     pub friction: T,
-    /// Rolling resistance ρ (the roll decelerates at (5/7)ρg), ≥ 0.
+    /// Rolling resistance at low speed ρ₀ (the roll decelerates at (5/7)ρ₀(1 + c v²)g,
+    /// [`GRASS_DRAG_S2PM2`]), ≥ 0.
     pub rolling_resistance: T,
     /// Crater scale κ (multiplies Penner's crater angle), ≥ 0.
     pub crater_scale: T,
 }
 
-/// `(5/7)ρg = v₀²/(2S)` solved for ρ, with standard gravity (the stimpmeter is read on
+/// Growth of the rolling resistance with speed, `c` in `ρ(v) = ρ₀(1 + c v²)` (s²/m²):
+/// the grass drag. Penner's putting form as quoted in patents citing it,
+/// `ρ = (0.7028/S[ft])·(1 + 0.0065 v²)` with `v` in ft/s: `c = 0.0065/0.3048²`.
+pub const GRASS_DRAG_S2PM2: f64 = 0.0065 / (FOOT_M * FOOT_M);
+
+/// The stimpmeter's roll `S = ln(1 + c v₀²)/(2·(5/7)ρ₀g·c)` (a roll decelerating at
+/// `(5/7)ρ₀g(1 + c v²)`) solved for ρ₀, with standard gravity (the stimpmeter is read on
 /// Earth, whatever the scene's gravity).
 fn resistance_from_stimp<T: Real>(stimp_m: T) -> T {
-    let v0 = lit::<T>(STIMPMETER_SPEED_MPS);
-    v0 * v0 / (lit::<T>(2.0 * 5.0 / 7.0 * crate::scene::STANDARD_GRAVITY_MPS2) * stimp_m)
+    let v0 = STIMPMETER_SPEED_MPS;
+    let c = GRASS_DRAG_S2PM2;
+    let reach = lit::<T>(c * v0 * v0).ln_1p();
+    reach / (lit::<T>(2.0 * 5.0 / 7.0 * crate::scene::STANDARD_GRAVITY_MPS2 * c) * stimp_m)
 }
 
 impl<T: Real> Surface<T> {
@@ -97,7 +113,7 @@ impl<T: Real> Surface<T> {
             crater_scale: lit(kappa),
         };
         match *self {
-            Self::FairwayFirm => Ok(penner(1.0, stimp(8.0), 1.0)),
+            Self::FairwayFirm => Ok(penner(1.0, lit(FAIRWAY_ROLLING_RESISTANCE), 1.0)),
             Self::FairwaySoft => Ok(penner(0.8, stimp(5.0), 1.2)),
             Self::Rough => Ok(Turf {
                 restitution: lit(0.30),

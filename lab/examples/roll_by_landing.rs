@@ -1,0 +1,92 @@
+//! Roll against landing angle and landing speed on the firm fairway (docs/ground.md):
+//! drives of 100–160 mph with launch angles and spins that land them at 5°–60°; then the
+//! run-out alone from a landing at each angle and speed with 2,500 rpm of backspin (a
+//! launch downwards from the turf is a landing there: the run-out starts at once).
+//! `cargo run --release -p carry-lab --example roll_by_landing`.
+use carry_core::ground::Surface;
+use carry_core::units::{deg, rpm};
+use carry_core::{Ball, Integrator, Launch};
+use carry_lab::ground_fit::{MPH_MPS, YARD_M, chart_scene};
+
+fn main() -> Result<(), String> {
+    // An optional rolling resistance ρ₀ for the fairway (else the preset's).
+    let surface = match std::env::args().nth(1).and_then(|a| a.parse::<f64>().ok()) {
+        Some(rho) => Surface::Custom(carry_core::Turf {
+            rolling_resistance: rho,
+            ..Surface::<f64>::FairwayFirm
+                .turf()
+                .map_err(|e| e.to_string())?
+        }),
+        None => Surface::FairwayFirm,
+    };
+    let scene = chart_scene(surface)
+        .prepare(&Ball::standard())
+        .map_err(|e| e.to_string())?;
+    println!(
+        "ball mph, launch deg, spin rpm -> carry yd, landing deg, landing m/s, roll yd, bounces"
+    );
+    for speed in [100.0, 130.0, 160.0] {
+        for (launch, spin) in [
+            (4.0, 1500.0),
+            (6.0, 2000.0),
+            (8.1, 2626.0),
+            (10.0, 2500.0),
+            (12.0, 3000.0),
+            (14.0, 3500.0),
+            (16.0, 4500.0),
+            (20.0, 6000.0),
+            (26.0, 8000.0),
+        ] {
+            let launch_data = Launch {
+                ball_speed_mps: speed * MPH_MPS,
+                launch_angle_rad: deg(launch),
+                launch_direction_rad: 0.0,
+                backspin_radps: rpm(spin),
+                sidespin_radps: 0.0,
+            };
+            let m = launch_data.ball_motion().map_err(|e| e.to_string())?;
+            let o = scene
+                .fly(&m, &Integrator::default(), None)
+                .map_err(|e| e.to_string())?;
+            let g = o.ground.ok_or("no ground")?;
+            println!(
+                "{speed:5.0} {launch:5.1} {spin:6.0} -> {:6.1} {:5.1} {:5.1} {:6.1} {:3}",
+                o.carry_m / YARD_M,
+                o.landing_angle_rad.to_degrees(),
+                o.landing_speed_mps,
+                g.roll_m / YARD_M,
+                g.bounces
+            );
+        }
+    }
+    let speeds = [15.0, 20.0, 25.0, 30.0, 35.0];
+    print!(
+        "\nroll (yd) from a landing at angle (rows, deg) and speed (columns, m/s), 2500 rpm:\n      "
+    );
+    for v in speeds {
+        print!(" {v:6.0}");
+    }
+    println!();
+    for angle in [
+        5.0, 10.0, 15.0, 20.0, 25.0, 30.0, 35.0, 40.0, 45.0, 50.0, 55.0, 60.0,
+    ] {
+        print!("{angle:5.0}°");
+        for v in speeds {
+            let landing = Launch {
+                ball_speed_mps: v,
+                launch_angle_rad: deg(-angle),
+                launch_direction_rad: 0.0,
+                backspin_radps: rpm(2500.0),
+                sidespin_radps: 0.0,
+            };
+            let m = landing.ball_motion().map_err(|e| e.to_string())?;
+            let o = scene
+                .fly(&m, &Integrator::default(), None)
+                .map_err(|e| e.to_string())?;
+            let g = o.ground.ok_or("no ground")?;
+            print!(" {:6.1}", g.roll_m / YARD_M);
+        }
+        println!();
+    }
+    Ok(())
+}

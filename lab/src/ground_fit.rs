@@ -1,0 +1,250 @@
+//! The run-out calibrated to TrackMan's 2010 driver chart (`carry calibrate`-style, as a
+//! library function: [`calibrate_fairway`]; `cargo run --release -p carry-lab --example
+//! ground_calibration` prints it, docs/ground.md has the figures).
+//!
+//! The chart (`../shared/data/trackman_driver_optimizer_2010.csv`) gives, for 30 drives,
+//! the launch (ball speed, launch angle, spin), the carry and the total on "a typical
+//! fairway". Each row is flown from its launch data in the data README's conditions
+//! (21.1 °C, 50 % RH, 101 325 Pa, no wind, level ground); its roll is the chart's
+//! `total − carry`. The one fitted number is the fairway's rolling resistance at low speed
+//! ρ₀ ([`carry_core::Turf::rolling_resistance`]); the bounce (Penner's restitution,
+//! friction and crater) and the grass drag's growth with speed
+//! ([`carry_core::ground::surface::GRASS_DRAG_S2PM2`]) are taken from their sources and
+//! not fitted. The fit minimises the mean absolute roll error (not the total's: the
+//! carry's own error belongs to the aerodynamics), by golden-section search on `ln ρ₀`,
+//! and reports leave-one-out errors.
+
+use carry_core::air::{Pressure, Weather};
+use carry_core::ground::{Ground, Surface, Turf};
+use carry_core::units::{deg, rpm};
+use carry_core::{Air, Ball, Integrator, Launch, Scene};
+
+/// One yard (m).
+pub const YARD_M: f64 = 0.9144;
+/// One mph (m/s).
+pub const MPH_MPS: f64 = 0.447_04;
+
+/// One row of the chart.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ChartRow {
+    /// Club speed (mph) and attack angle (deg), as a label.
+    pub label: String,
+    /// The launch.
+    pub launch: Launch<f64>,
+    /// The chart's carry (yd).
+    pub carry_yd: f64,
+    /// The chart's total (yd).
+    pub total_yd: f64,
+}
+
+/// A row flown and run out.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RollRow {
+    /// The row's label.
+    pub label: String,
+    /// Chart carry and model carry (yd).
+    pub carry_yd: (f64, f64),
+    /// Landing angle (deg) and speed (m/s) of the model's flight.
+    pub landing: (f64, f64),
+    /// Chart roll (`total − carry`) and model roll (yd).
+    pub roll_yd: (f64, f64),
+    /// Chart total and model total (yd).
+    pub total_yd: (f64, f64),
+}
+
+impl RollRow {
+    /// Model roll − chart roll (yd).
+    #[must_use]
+    pub fn roll_error_yd(&self) -> f64 {
+        self.roll_yd.1 - self.roll_yd.0
+    }
+    /// Model total − chart total (yd).
+    #[must_use]
+    pub fn total_error_yd(&self) -> f64 {
+        self.total_yd.1 - self.total_yd.0
+    }
+}
+
+/// The chart's rows from its CSV text.
+///
+/// # Errors
+/// A missing column or a number that does not parse.
+pub fn parse_chart(text: &str) -> Result<Vec<ChartRow>, String> {
+    let mut lines = text.lines();
+    let header: Vec<&str> = lines.next().ok_or("empty chart")?.split(',').collect();
+    let col = |n: &str| {
+        header
+            .iter()
+            .position(|h| h.trim() == n)
+            .ok_or(format!("no column {n}"))
+    };
+    let (club, attack, bs, la, spin, carry, total) = (
+        col("club_speed_mph")?,
+        col("attack_deg")?,
+        col("ball_speed_mph")?,
+        col("launch_deg")?,
+        col("spin_rpm")?,
+        col("carry_yd")?,
+        col("total_yd")?,
+    );
+    lines
+        .filter(|l| !l.trim().is_empty())
+        .map(|l| {
+            let f: Vec<&str> = l.split(',').collect();
+            let x = |i: usize| -> Result<f64, String> {
+                f.get(i)
+                    .and_then(|s| s.trim().parse::<f64>().ok())
+                    .ok_or(format!("bad row: {l}"))
+            };
+            Ok(ChartRow {
+                label: format!("{} mph, {:+} deg", x(club)?, x(attack)?),
+                launch: Launch {
+                    ball_speed_mps: x(bs)? * MPH_MPS,
+                    launch_angle_rad: deg(x(la)?),
+                    launch_direction_rad: 0.0,
+                    backspin_radps: rpm(x(spin)?),
+                    sidespin_radps: 0.0,
+                },
+                carry_yd: x(carry)?,
+                total_yd: x(total)?,
+            })
+        })
+        .collect()
+}
+
+/// The data README's conditions: 21.1 °C, 50 % RH, 101 325 Pa, on `surface`, level.
+#[must_use]
+pub fn chart_scene(surface: Surface<f64>) -> Scene<f64> {
+    Scene {
+        air: Air::Weather(Weather {
+            temperature_c: 21.1,
+            relative_humidity: 0.5,
+            pressure: Pressure::Pa(101_325.0),
+        }),
+        ground: Some(Ground::level(surface)),
+        ..Scene::default()
+    }
+}
+
+/// Flies and runs out every row in `scene` (which must have a ground).
+///
+/// # Errors
+/// A row that does not fly or run out.
+pub fn roll_rows(rows: &[ChartRow], scene: &Scene<f64>) -> Result<Vec<RollRow>, String> {
+    let ball = Ball::standard();
+    let prepared = scene.prepare(&ball).map_err(|e| e.to_string())?;
+    rows.iter()
+        .map(|r| {
+            let motion = r.launch.ball_motion().map_err(|e| e.to_string())?;
+            let o = prepared
+                .fly(&motion, &Integrator::default(), None)
+                .map_err(|e| format!("{}: {e}", r.label))?;
+            let g = o.ground.ok_or("the scene has no ground")?;
+            let carry = o.carry_m / YARD_M;
+            let total = g.total_m / YARD_M;
+            Ok(RollRow {
+                label: r.label.clone(),
+                carry_yd: (r.carry_yd, carry),
+                landing: (o.landing_angle_rad.to_degrees(), o.landing_speed_mps),
+                roll_yd: (r.total_yd - r.carry_yd, total - carry),
+                total_yd: (r.total_yd, total),
+            })
+        })
+        .collect()
+}
+
+/// Mean absolute value.
+#[must_use]
+pub fn mean_abs(x: impl Iterator<Item = f64>) -> f64 {
+    let (s, n) = x.fold((0.0, 0_u32), |(s, n), e| (s + e.abs(), n + 1));
+    if n == 0 { 0.0 } else { s / f64::from(n) }
+}
+
+/// The calibrated fairway.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FairwayFit {
+    /// Fitted rolling resistance at low speed ρ₀.
+    pub rolling_resistance: f64,
+    /// Every row at the fitted ρ₀.
+    pub rows: Vec<RollRow>,
+    /// Leave-one-out roll error per row (yd): the row predicted with ρ₀ fitted to the others.
+    pub leave_one_out_yd: Vec<f64>,
+}
+
+/// The firm fairway's turf with rolling resistance `rho` (Penner's bounce as the preset).
+fn fairway_with(rho: f64) -> Result<Surface<f64>, String> {
+    let base = Surface::<f64>::FairwayFirm
+        .turf()
+        .map_err(|e| e.to_string())?;
+    Ok(Surface::Custom(Turf {
+        rolling_resistance: rho,
+        ..base
+    }))
+}
+
+/// ρ₀ minimising the mean absolute roll error over `rows` (golden section on ln ρ₀ in
+/// 0.01–1).
+fn fit_rho(rows: &[ChartRow], base: &Scene<f64>) -> Result<f64, String> {
+    let cost = |ln_rho: f64| -> Result<f64, String> {
+        let scene = Scene {
+            ground: Some(Ground::level(fairway_with(ln_rho.exp())?)),
+            ..*base
+        };
+        Ok(mean_abs(
+            roll_rows(rows, &scene)?.iter().map(RollRow::roll_error_yd),
+        ))
+    };
+    let (mut a, mut b) = (0.01_f64.ln(), 1.0_f64.ln());
+    let r = 0.5 * (5.0_f64.sqrt() - 1.0);
+    let (mut c, mut d) = (b - r * (b - a), a + r * (b - a));
+    let (mut fc, mut fd) = (cost(c)?, cost(d)?);
+    for _ in 0..40 {
+        if fc < fd {
+            b = d;
+            d = c;
+            fd = fc;
+            c = b - r * (b - a);
+            fc = cost(c)?;
+        } else {
+            a = c;
+            c = d;
+            fc = fd;
+            d = a + r * (b - a);
+            fd = cost(d)?;
+        }
+    }
+    Ok((0.5 * (a + b)).exp())
+}
+
+/// Calibrates the firm fairway's ρ₀ to the chart `rows` in `scene`'s air and aerodynamics
+/// (its ground is replaced), with leave-one-out errors.
+///
+/// # Errors
+/// A row that does not fly.
+pub fn calibrate_fairway(rows: &[ChartRow], scene: &Scene<f64>) -> Result<FairwayFit, String> {
+    let rho = fit_rho(rows, scene)?;
+    let at = |rho: f64| -> Result<Scene<f64>, String> {
+        Ok(Scene {
+            ground: Some(Ground::level(fairway_with(rho)?)),
+            ..*scene
+        })
+    };
+    let fitted = roll_rows(rows, &at(rho)?)?;
+    let mut loo = Vec::with_capacity(rows.len());
+    for i in 0..rows.len() {
+        let others: Vec<ChartRow> = rows
+            .iter()
+            .enumerate()
+            .filter(|(j, _)| *j != i)
+            .map(|(_, r)| r.clone())
+            .collect();
+        let rho_i = fit_rho(&others, scene)?;
+        let row = roll_rows(&rows[i..=i], &at(rho_i)?)?;
+        loo.push(row.first().map_or(f64::NAN, RollRow::roll_error_yd));
+    }
+    Ok(FairwayFit {
+        rolling_resistance: rho,
+        rows: fitted,
+        leave_one_out_yd: loo,
+    })
+}

@@ -1,0 +1,45 @@
+//! The firm fairway's rolling resistance against TrackMan's 2010 driver chart
+//! (`carry_lab::ground_fit`): the preset is what the calibration fits, so a change to the
+//! aerodynamics or the ground that moves the fit fails here until the preset is re-run
+//! (`cargo run --release -p carry-lab --example ground_calibration`).
+
+use carry_core::ground::Surface;
+use carry_core::ground::surface::FAIRWAY_ROLLING_RESISTANCE;
+use carry_lab::ground_fit::{
+    RollRow, calibrate_fairway, chart_scene, mean_abs, parse_chart, roll_rows,
+};
+
+const CHART: &str = include_str!("../../tests/data/trackman_driver_optimizer_2010.csv");
+
+#[test]
+fn the_fairway_preset_is_the_charts_calibration() {
+    let rows = parse_chart(CHART).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(rows.len(), 30);
+    let fit = calibrate_fairway(&rows, &chart_scene(Surface::FairwayFirm))
+        .unwrap_or_else(|e| panic!("{e}"));
+    let rho = fit.rolling_resistance;
+    assert!(
+        (rho / FAIRWAY_ROLLING_RESISTANCE - 1.0).abs() < 0.03,
+        "fitted rho0 {rho:.4} against the preset's {FAIRWAY_ROLLING_RESISTANCE}: re-run the calibration"
+    );
+    let fitted = mean_abs(fit.rows.iter().map(RollRow::roll_error_yd));
+    let loo = mean_abs(fit.leave_one_out_yd.iter().copied());
+    assert!(
+        fitted < 4.0 && loo < 4.0,
+        "roll mean |err| {fitted:.2} yd, leave-one-out {loo:.2} yd"
+    );
+    // The preset itself: every chart roll within the chart's own scatter (its rolls run
+    // 16–40 yd at 35–45° landings), and the mean as fitted.
+    let preset =
+        roll_rows(&rows, &chart_scene(Surface::FairwayFirm)).unwrap_or_else(|e| panic!("{e}"));
+    let mean = mean_abs(preset.iter().map(RollRow::roll_error_yd));
+    assert!(mean < 4.0, "{mean}");
+    for r in &preset {
+        assert!(
+            (15.0..35.0).contains(&r.roll_yd.1),
+            "{}: {:.1} yd",
+            r.label,
+            r.roll_yd.1
+        );
+    }
+}
