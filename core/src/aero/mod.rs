@@ -60,17 +60,19 @@ pub(crate) trait Rhs<T: Real> {
 
     /// Whether a fixed step of `h` seconds from `y0` to `y1` grew no faster than the exact
     /// dynamics can. Drag only slows the ball in the air's frame and lift is normal to
-    /// it, so the air speed `V = |v − w(y)|` grows by at most `g·h` plus the change of
-    /// the wind between the two heights, and the spin only decays:
+    /// it, so the air speed `V = |v − w(y)|` grows by at most `d = g·h + |w(y₁) − w(y₀)|`
+    /// over the step, and the spin only decays. Tested without a square root, on the
+    /// squares, with `(V₀ + d)² ≤ 2V₀² + 4(g²h² + |Δw|²)` and a slack of 1/8 in speed:
     ///
     /// ```text
-    /// V₁ ≤ (V₀ + g·h + |w(y₁) − w(y₀)|)·(1 + 1/8),     |s₁| ≤ s₀·(1 + 1/8)
+    /// V₁² ≤ (9/8)² · (2V₀² + 4(g²h² + |Δw|²)),     |s₁| ≤ (9/8)·s₀
     /// ```
     ///
-    /// An explicit step past its stability limit (`h·k_d·V ≳ 2`) breaks this at once and
-    /// then grows geometrically; the 1/8 slack leaves room for the truncation error of a
-    /// stable step. Without this test such a step can stay finite yet astronomically
-    /// large (issue 20).
+    /// An explicit step past its stability limit (`h·k_d·V ≳ 2`) multiplies the air speed
+    /// by `|1 − h·k_d·V|` or more, so it breaks this within a step or a few as the growth
+    /// compounds (`k_d·V` grows with `V`); a stable step's truncation error is orders
+    /// smaller than the slack. Without this test such a step can stay finite yet
+    /// astronomically large (issue 20).
     fn step_is_bounded(&self, y0: &State<T>, y1: &State<T>, h: T) -> bool;
 }
 
@@ -264,10 +266,12 @@ impl<T: Real> Rhs<T> for Dynamics<'_, T> {
     fn step_is_bounded(&self, y0: &State<T>, y1: &State<T>, h: T) -> bool {
         let wind = &self.scene.wind;
         let (w0, w1) = (wind.at(y0[Y]), wind.at(y1[Y]));
-        let air = |y: &State<T>, w: &Vector3<T>| (Vector3::new(y[3], y[4], y[5]) - w).norm();
-        let slack = lit::<T>(1.125);
-        let speed_bound = (air(y0, &w0) + self.scene.gravity * h + (w1 - w0).norm()) * slack;
-        air(y1, &w1) <= speed_bound && y1[S].abs() <= y0[S] * slack
+        let air_sq =
+            |y: &State<T>, w: &Vector3<T>| (Vector3::new(y[3], y[4], y[5]) - w).norm_squared();
+        let gh = self.scene.gravity * h;
+        let growth_sq =
+            lit::<T>(2.0) * air_sq(y0, &w0) + lit::<T>(4.0) * (gh * gh + (w1 - w0).norm_squared());
+        air_sq(y1, &w1) <= lit::<T>(1.265_625) * growth_sq && y1[S].abs() <= y0[S] * lit(1.125)
     }
 }
 
