@@ -141,23 +141,13 @@ pub const REFERENCE_DRIVER: Preset = Preset {
 /// The built-in club presets, longest club first.
 pub const PRESETS: [Preset; 13] = [
     Preset {
-        name: "driver",
-        aliases: &[],
         source: "modern 460 cc driver: the measured Ping i15 head of PHYSICS.md (200 g, CG 40 mm behind the face centre at its height, bulge and roll 0.30 m = 11.8 in, COR 0.83) with a modern head's inertia: heel-toe (Iyy) 4,800 g cm2 (460 cc heads 4,500-5,200), vertical (Izz) 3,200 g cm2 (2/3 of heel-toe, Tutelman's range 1/2-2/3), Ixx scaled with Iyy from the i15 (3,400)",
-        mass_kg: 0.2,
         inertia_kgm2: [3.400000e-04, 4.800000e-04, 3.200000e-04],
-        loft_deg: 10.5,
-        roll_radius_m: 0.30,
-        bulge_radius_m: 0.30,
-        cg_to_face_m: [0.04, 0.0, 0.0],
-        restitution: 0.83,
-        contact: FITTED_CONTACT,
         typical: TypicalDelivery {
-            club_speed_mps: 115.0 * MPS_PER_MPH,
-            attack_angle_deg: -0.9,
-            dynamic_loft_deg: 12.8,
             impact_height_m: 0.007,
+            ..REFERENCE_DRIVER.typical
         },
+        ..REFERENCE_DRIVER
     },
     Preset {
         name: "3wood",
