@@ -25,6 +25,7 @@
 pub mod ball;
 pub mod club;
 pub mod contact;
+pub mod contact_law;
 pub mod convention;
 pub mod delivery;
 pub mod error;
@@ -55,10 +56,11 @@ pub use wind::Wind;
 // --- end flight ---
 
 pub use ball::{Ball, BallMotion};
-pub use club::{ClubHead, ClubSpec, ContactLaw, PRESETS, Preset};
+pub use club::{ClubHead, ClubSpec, ContactLaw};
 pub use convention::DeliveryConvention;
 pub use delivery::{ClubMotion, Delivery, FaceLocation, Strike};
 pub use error::{Error, Field, Reason, Result};
 pub use impact::{ImpactOutcome, Solver};
 pub use launch::{Launch, LaunchMetrics};
+pub use presets::{PRESETS, Preset};
 pub use real::Real;

@@ -138,6 +138,19 @@ pub const REFERENCE_DRIVER: Preset = Preset {
     },
 };
 
+impl<T: Real> ClubSpec<T> {
+    /// The driver of PHYSICS.md (measured Ping i15 head) with the seed's rolling contact:
+    /// the model the golden files pin ([`REFERENCE_DRIVER`]). (The `driver` preset,
+    /// [`PRESETS`]`[0]`, is a modern head with the calibrated contact.) Defined here, above
+    /// the club, so that [`crate::club`] does not import its presets.
+    #[must_use]
+    pub fn driver() -> Self {
+        let mut spec = REFERENCE_DRIVER.spec();
+        spec.contact = ContactLaw::Rolling;
+        spec
+    }
+}
+
 /// The built-in club presets, longest club first.
 pub const PRESETS: [Preset; 13] = [
     Preset {
