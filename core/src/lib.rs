@@ -37,6 +37,7 @@ pub mod linalg;
 pub mod presets;
 pub mod real;
 pub mod shot;
+pub mod trajectory;
 pub mod units;
 mod validate;
 
@@ -45,6 +46,7 @@ pub mod aero;
 pub mod air;
 pub mod flight;
 pub mod ground;
+pub mod integrator;
 pub mod scene;
 pub mod wind;
 

@@ -12,6 +12,8 @@ pub const M_PER_YARD: f64 = 0.9144;
 pub const M_PER_FOOT: f64 = 0.3048;
 /// rad/s per rpm (2π/60).
 pub const RADPS_PER_RPM: f64 = core::f64::consts::PI / 30.0;
+/// Standard gravity (m/s²; exact by definition, CGPM 1901).
+pub const STANDARD_GRAVITY_MPS2: f64 = 9.80665;
 
 /// Degrees → radians.
 #[inline]

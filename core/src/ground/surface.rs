@@ -86,7 +86,7 @@ fn resistance_from_stimp<T: Real>(stimp_m: T) -> T {
     let v0 = STIMPMETER_SPEED_MPS;
     let c = GRASS_DRAG_S2PM2;
     let reach = lit::<T>(c * v0 * v0).ln_1p();
-    reach / (lit::<T>(2.0 * 5.0 / 7.0 * crate::scene::STANDARD_GRAVITY_MPS2 * c) * stimp_m)
+    reach / (lit::<T>(2.0 * 5.0 / 7.0 * crate::units::STANDARD_GRAVITY_MPS2 * c) * stimp_m)
 }
 
 impl<T: Real> Surface<T> {
