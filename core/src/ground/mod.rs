@@ -43,7 +43,7 @@ pub const MAX_BOUNCES: u32 = 64;
 /// measures what this changes (centimetres over a run-out).
 pub const LOW_HOP_HEIGHT_M: f64 = 1.0;
 /// Steepest accepted ground (rad): 45°.
-pub const MAX_SLOPE_RAD: f64 = core::f64::consts::FRAC_PI_4;
+pub use crate::units::MAX_SLOPE_RAD;
 
 /// The ground after the landing: a surface and the plane's orientation.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -22,11 +22,11 @@ use crate::validate::{in_range, positive};
 /// Speed at which the stimpmeter releases the ball (m/s).
 pub const STIMPMETER_SPEED_MPS: f64 = 1.83;
 /// One foot (m): stimp readings are quoted in feet.
-pub const FOOT_M: f64 = 0.3048;
+pub use crate::units::M_PER_FOOT as FOOT_M;
 /// Default green speed: stimp 10 ft (a fast club green; tour greens run 11–13).
 pub const DEFAULT_STIMP_M: f64 = 10.0 * FOOT_M;
 /// Accepted stimp readings (m): 1 ft to 30 ft.
-pub const STIMP_RANGE_M: (f64, f64) = (FOOT_M, 30.0 * FOOT_M);
+pub use crate::units::STIMP_RANGE_M;
 /// Penner's restitution at vanishing normal speed (2002, eq. 5).
 pub const PENNER_RESTITUTION_0: f64 = 0.510;
 /// Penner's ball–turf friction coefficient (2002).
