@@ -26,7 +26,7 @@ pub const HOP_MAX_FIRST_STEP_S: f64 = 2.0;
 pub const HOP_TOLERANCE_FACTOR: f64 = 100.0;
 
 /// Flies a hop from a contact: returns the next contact (through the flight's integrator
-/// and force model; see `flight::hop`).
+/// and force model; see [`Hops`]).
 pub(crate) trait Hopper<T: Real> {
     fn hop(
         &self,
@@ -92,7 +92,7 @@ impl HopForces {
 ///   and the spin decays. Gravity's share of the speed's change is left out: the speed
 ///   dips towards the apex and is back at the landing. Against the same hops integrated
 ///   it is as close as a second evaluation at the landing (unit test
-///   `flight::tests::closed_form_hop_matches_the_integrated_hop`; docs/ground.md);
+///   `ground::hop::tests::closed_form_hop_matches_the_integrated_hop`; docs/ground.md);
 /// - `ThreePoints`: in a wind profile the air velocity changes with height (zero at the
 ///   ground, where both ends are), so the forces are evaluated at the bounce, at the
 ///   landing predicted with `a₀` (`j = (a₁ − a₀)/τ₁`) and in the middle of that hop, and
@@ -197,8 +197,8 @@ pub(crate) fn low_hop<T: Real, H: Hopper<T>>(
             (p, v, spin_at(t, s0, spin_jerk))
         });
     }
-    // (The plain closure when there is no q: the `Option` in the landing's state cost ~25
-    // instructions a shot on the M4F.)
+    // (The plain closure when there is no q: an `Option` in the landing's state costs every
+    // shot a test and a copy on the M4F; docs/ground.md.)
     let (position, velocity) = match q {
         Some(q) => state_q(tau, &j, Some(&q)),
         None => state(tau, &j),
@@ -422,11 +422,10 @@ mod tests {
 
     /// The aimed one-step hop (`aimed`) against the same hop integrated at a tight
     /// tolerance, for hops of 1–5 m with backspin, topspin and sidespin, in still air and a
-    /// uniform crosswind: within 2.5 cm, 1 ms and 1.5 cm/s (aimed: measured 3.8 mm, 0.6 ms
-    /// and 1.2 cm/s, a 5 m hop at 22 m/s; a driver's first hop 0.5 mm and 1.3 mm/s; the
-    /// one hop whose aimed step is rejected, 5 m into the wind, is the integrator's at the
-    /// hop tolerance: 2.0 cm), in 7 evaluations and one step. At the tight tolerance the
-    /// aimed step fails the error test and the hop is the integrator's, bit for bit.
+    /// uniform crosswind: within 2.5 cm, 1 ms and 1.5 cm/s, in 7 evaluations and one step
+    /// (a hop whose aimed step is rejected, 5 m into the wind, is the integrator's at the
+    /// hop tolerance). At the tight tolerance the aimed step fails the error test and the
+    /// hop is the integrator's, bit for bit. The measured errors: docs/ground.md.
     #[test]
     fn aimed_hop_matches_the_integrated_hop() {
         let ball = Ball::<f64>::standard();
@@ -517,12 +516,10 @@ mod tests {
     }
 
     /// The closed-form low hop against the same hop integrated at a tight tolerance, for
-    /// hops up to the 1 m limit with backspin, topspin and sidespin: forces at both ends in
-    /// still air and a uniform crosswind (within 10 cm and 4 ms; measured 6.6 cm and 2.8 ms,
-    /// a 0.8 m hop at 20 m/s into the wind), and a third in the middle in a wind profile
-    /// (within 20 cm and 15 ms; measured 16.4 cm with the lift of issue 21, 10.8 cm and 10 ms
-    /// before it, against 51 cm and 46 ms with the two ends alone, where the profile's wind
-    /// is zero).
+    /// hops up to the 1 m limit with backspin, topspin and sidespin: one evaluation and its
+    /// rate in still air and a uniform crosswind (within 5 cm, 5 ms and 8 cm/s), three in a
+    /// wind profile, whose wind is zero at both ends of the hop (within 20 cm, 15 ms and
+    /// 30 cm/s). The measured errors: docs/ground.md.
     #[test]
     fn closed_form_hop_matches_the_integrated_hop() {
         let ball = Ball::<f64>::standard();

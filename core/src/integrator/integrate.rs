@@ -237,8 +237,7 @@ pub(crate) fn dormand_prince<T: Real, R: Rhs<T>>(
         }
         h = smaller(h, remaining);
         // The stages written out (as `dormand_prince_stages`): through the shared function
-        // the compiler keeps the stages in memory and the flight costs 1.5 % more host
-        // instructions.
+        // the compiler keeps the stages in memory, which costs the flight (docs/flight.md).
         let k2 = rhs.eval(&combine(&y, h, A2, [&k1]));
         let k3 = rhs.eval(&combine(&y, h, A3, [&k1, &k2]));
         let k4 = rhs.eval(&combine(&y, h, A4, [&k1, &k2, &k3]));
