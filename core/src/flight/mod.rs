@@ -1,7 +1,7 @@
 //! Ball flight: from launch conditions to where and how the ball lands (PHYSICS.md,
 //! "Flight").
 //!
-//! The flight flies through the force field of a [`Scene`]: its aerodynamic model
+//! The ball flies through the force field of a [`Scene`]: its aerodynamic model
 //! ([`crate::aero`]), effects, air and wind. The state (position, velocity, spin magnitude
 //! about the fixed spin axis) is integrated by an [`Integrator`] — explicit Euler,
 //! classical RK4 or adaptive Dormand–Prince 5(4) ([`crate::integrator`]) — and the landing
