@@ -25,6 +25,7 @@
 pub mod ball;
 pub mod club;
 pub mod contact;
+pub mod contact_law;
 pub mod convention;
 pub mod delivery;
 pub mod error;
@@ -36,6 +37,7 @@ pub mod linalg;
 pub mod presets;
 pub mod real;
 pub mod shot;
+pub mod trajectory;
 pub mod units;
 mod validate;
 
@@ -44,6 +46,7 @@ pub mod aero;
 pub mod air;
 pub mod flight;
 pub mod ground;
+pub mod integrator;
 pub mod scene;
 pub mod wind;
 
@@ -55,10 +58,11 @@ pub use wind::Wind;
 // --- end flight ---
 
 pub use ball::{Ball, BallMotion};
-pub use club::{ClubHead, ClubSpec, ContactLaw, PRESETS, Preset};
+pub use club::{ClubHead, ClubSpec, ContactLaw};
 pub use convention::DeliveryConvention;
 pub use delivery::{ClubMotion, Delivery, FaceLocation, Strike};
 pub use error::{Error, Field, Reason, Result};
 pub use impact::{ImpactOutcome, Solver};
 pub use launch::{Launch, LaunchMetrics};
+pub use presets::{PRESETS, Preset};
 pub use real::Real;
