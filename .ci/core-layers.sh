@@ -116,10 +116,10 @@ print "core modules and what they import (crate:: / super:: paths, tests left ou
 my %layer; my $depth; $depth = sub {
     my ($v, $seen) = @_; return $layer{$v} if exists $layer{$v};
     return 0 if $seen->{$v}; local $seen->{$v} = 1;
-    my $d = 0; for my $w (keys %{$edges{$v}}) { my $x = 1 + $depth->($w, $seen); $d = $x if $x > $d; }
+    my $d = 0; for my $w (sort keys %{$edges{$v}}) { my $x = 1 + $depth->($w, $seen); $d = $x if $x > $d; }
     return $layer{$v} = $d;
 };
-$depth->($_, {}) for keys %edges;
+$depth->($_, {}) for sort keys %edges;
 for my $v (sort { $layer{$a} <=> $layer{$b} or $a cmp $b } keys %edges) {
     printf "  L%-2d %-11s -> %s\n", $layer{$v}, $v, join(", ", sort keys %{$edges{$v}}) || "(leaf)";
 }
