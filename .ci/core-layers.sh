@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The core's layering: derive the import graph among carry-core's top-level modules
 # (`core/src/X.rs` and `core/src/X/`) from their `crate::` and crossing `super::` paths
-# (grouped `use crate::{a, b::c}` included; comments and `#[cfg(test)]` modules left out),
+# (grouped `use crate::{a, b::c}` included, and names the crate root re-exports resolved to
+# their module; comments and `#[cfg(test)]` modules left out),
 # print it, and fail on any import circle, printing each one.
 #
 #   bash .ci/core-layers.sh [core/src]      # prints the graph; exit 1 on a circle
@@ -78,8 +79,24 @@ for my $file (@files) {
         for my $item (split /,/, $group) { $add->($1) if $item =~ /^\s*(\w+)/; }
     }
 }
-# Only edges to modules that exist (drops e.g. crate::Real re-exported at the root).
-for my $f (keys %edges) { for my $t (keys %{$edges{$f}}) { delete $edges{$f}{$t} unless exists $edges{$t}; } }
+# Names the crate root re-exports (`pub use scene::{Scene, ..}` in lib.rs) stand for their
+# module; other names that are not modules (e.g. a macro) are dropped.
+my %root;
+if (open my $lib, "<", "$src/lib.rs") {
+    local $/; my $t = <$lib>; close $lib;
+    $t =~ s{//[^\n]*}{}g;
+    while ($t =~ /pub\s+use\s+(\w+)\s*::\s*(\{[^}]*\}|\w+)/g) {
+        my ($m, $names) = ($1, $2);
+        $root{$_} = $m for grep { length } map { s/\s+as\s+\w+//r =~ s/\W//gr } split /,/, $names;
+    }
+}
+for my $f (keys %edges) {
+    for my $t (keys %{$edges{$f}}) {
+        next if exists $edges{$t};
+        delete $edges{$f}{$t};
+        $edges{$f}{$root{$t}} = 1 if exists $root{$t} && $root{$t} ne $f && exists $edges{$root{$t}};
+    }
+}
 # Tarjan SCC.
 my ($index, %idx, %low, %on, @stack, @sccs) = (0);
 my $strong; $strong = sub {
@@ -99,10 +116,10 @@ print "core modules and what they import (crate:: / super:: paths, tests left ou
 my %layer; my $depth; $depth = sub {
     my ($v, $seen) = @_; return $layer{$v} if exists $layer{$v};
     return 0 if $seen->{$v}; local $seen->{$v} = 1;
-    my $d = 0; for my $w (keys %{$edges{$v}}) { my $x = 1 + $depth->($w, $seen); $d = $x if $x > $d; }
+    my $d = 0; for my $w (sort keys %{$edges{$v}}) { my $x = 1 + $depth->($w, $seen); $d = $x if $x > $d; }
     return $layer{$v} = $d;
 };
-$depth->($_, {}) for keys %edges;
+$depth->($_, {}) for sort keys %edges;
 for my $v (sort { $layer{$a} <=> $layer{$b} or $a cmp $b } keys %edges) {
     printf "  L%-2d %-11s -> %s\n", $layer{$v}, $v, join(", ", sort keys %{$edges{$v}}) || "(leaf)";
 }

@@ -17,6 +17,12 @@
 //! frames and equations follow the project's physics contract (see the README's
 //! "Model" section). SI units inside; [`units`] converts at the edges.
 //!
+//! The modules are layered: each imports only lower ones, with no import circle (CI checks
+//! it with `.ci/core-layers.sh`). Below the flight, [`trajectory`] holds the types every
+//! stage shares, [`aero`] the scene's force field and the right-hand side, [`integrator`]
+//! the integrators, [`ground`] the run-out and its hops; [`scene`] assembles them and
+//! [`flight`] runs them. [`presets`] sit above the club, the impact and the conventions.
+//!
 //! Every public entry point validates its inputs once and returns a typed
 //! [`Error`]; nothing panics or returns NaN.
 #![no_std]
@@ -37,7 +43,6 @@ pub mod linalg;
 pub mod presets;
 pub mod real;
 pub mod shot;
-pub mod trajectory;
 pub mod units;
 mod validate;
 
@@ -48,6 +53,7 @@ pub mod flight;
 pub mod ground;
 pub mod integrator;
 pub mod scene;
+pub mod trajectory;
 pub mod wind;
 
 pub use air::{Air, Pressure, Weather};
