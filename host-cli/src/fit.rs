@@ -417,7 +417,7 @@ pub fn report(cmd: &FitCmd) -> Result<String, Failure> {
     }
     let evaluate = match &cmd.evaluate {
         Some(name) => {
-            Some(carry_lab::aero_file::resolve(name).map_err(|e| InputError::new("evaluate", e))?)
+            Some(carry_io::aero_file::resolve(name).map_err(|e| InputError::new("evaluate", e))?)
         }
         None => None,
     };
@@ -492,11 +492,11 @@ pub fn report(cmd: &FitCmd) -> Result<String, Failure> {
                 .map(|l| format!("; leave-one-out mean {:.2} %", l.mean_abs_pct))
                 .unwrap_or_default(),
         );
-        std::fs::write(path, carry_lab::aero_file::to_toml(&model, &comment))
+        std::fs::write(path, carry_io::aero_file::to_toml(&model, &comment))
             .map_err(|e| Failure::Other(format!("cannot write {}: {e}", path.display())))?;
     }
     let text = if cmd.json {
-        let coefficients = carry_lab::aero_file::coefficients(&model)
+        let coefficients = carry_io::aero_file::coefficients(&model)
             .into_iter()
             .map(|(k, v)| (k.to_string(), serde_json::json!(v)))
             .collect();

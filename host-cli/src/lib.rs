@@ -7,28 +7,26 @@
 #![allow(missing_docs)]
 
 pub mod analyses;
-pub mod batch;
+pub use carry_io::{batch, compute, contact, error, ground, params, report, scene, units};
 pub mod cli;
 pub mod clubs;
-pub mod compute;
-pub mod contact;
-pub mod error;
 pub mod fit;
 pub mod fit_contact;
-pub mod ground;
-pub mod params;
 pub mod plot;
-pub mod report;
-pub mod scene;
-pub mod units;
+pub mod table;
 
 use clap::Parser as _;
 use cli::{BatchCmd, BenchCmd, Cli, Command, OutputArgs, PlotCmd};
 use compute::Mode;
-use error::{EXIT_INPUT, EXIT_IO, Failure};
+use error::Failure;
 use params::Params;
 use std::io::Write as _;
 use std::process::ExitCode;
+
+/// Exit status for invalid input (also clap's usage-error status).
+pub const EXIT_INPUT: u8 = 2;
+/// Exit status for an I/O failure (writing output, reading a file that exists).
+pub const EXIT_IO: u8 = 1;
 
 /// Runs the command line `args` (the first is the program name), writing to stdout and
 /// stderr; returns the exit status.
@@ -189,13 +187,13 @@ fn single(
     } else if output.csv {
         report::single_csv(mode, &r)
     } else {
-        let ctx = report::TableContext {
+        let ctx = table::TableContext {
             club: p.club.preset.name,
             club_speed_mps: (mode != Mode::Flight).then_some(compute::club_speed_mps(p)),
             impact_location_m: (mode != Mode::Flight)
                 .then_some((compute::impact_height_m(p), p.delivery.impact_toe_m)),
         };
-        report::table(mode, &r, output.units, &ctx).into_bytes()
+        table::table(mode, &r, output.units, &ctx).into_bytes()
     };
     write_stdout(&bytes)
 }
@@ -264,7 +262,7 @@ fn dispatch(cli: Cli) -> Result<(), Failure> {
             aero,
         }) => {
             let aero = match aero {
-                Some(a) => carry_lab::aero_file::resolve(&a)
+                Some(a) => carry_io::aero_file::resolve(&a)
                     .map_err(|e| Failure::Input(error::InputError::new("aero", e)))?,
                 None => carry_core::aero::AeroModel::default(),
             };

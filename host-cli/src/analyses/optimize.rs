@@ -237,7 +237,7 @@ fn table(o: &Optimum, u: Units) -> String {
     let (carry, cu) = u.display(Quantity::Long, o.shot.carry_m);
     let (side, _) = u.display(Quantity::Long, o.shot.side_m);
     let (height, hu) = u.display(Quantity::Offset, o.point.impact_height_m);
-    let (speed, su) = u.display(Quantity::Speed, o.shot.ball_speed_mps);
+    let (speed, su) = u.display(Quantity::Speed, o.shot.launch.ball_speed_mps);
     let _ = writeln!(s, "optimum ({})", o.objective);
     let _ = writeln!(
         s,
@@ -252,8 +252,12 @@ fn table(o: &Optimum, u: Units) -> String {
     let _ = writeln!(s, "  impact height     {height:8.2} {hu}");
     let _ = writeln!(s, "launch");
     let _ = writeln!(s, "  ball speed        {speed:8.2} {su}");
-    let _ = writeln!(s, "  launch angle      {:8.2} deg", o.shot.launch_angle_deg);
-    let _ = writeln!(s, "  spin              {:8.0} rpm", o.shot.spin_rpm);
+    let _ = writeln!(
+        s,
+        "  launch angle      {:8.2} deg",
+        o.shot.launch.launch_angle_deg
+    );
+    let _ = writeln!(s, "  spin              {:8.0} rpm", o.shot.launch.spin_rpm);
     let _ = writeln!(s, "  carry             {carry:8.2} {cu}");
     let _ = writeln!(s, "  side              {side:8.2} {cu}");
     if o.objective == "dispersion" {
@@ -314,9 +318,9 @@ fn chart_table(c: &Chart, u: Units) -> String {
             u.to_display(Quantity::Speed, cell.club_speed_mps),
             cell.attack_angle_deg,
             cell.dynamic_loft_deg,
-            u.to_display(Quantity::Speed, cell.shot.ball_speed_mps),
-            cell.shot.launch_angle_deg,
-            cell.shot.spin_rpm,
+            u.to_display(Quantity::Speed, cell.shot.launch.ball_speed_mps),
+            cell.shot.launch.launch_angle_deg,
+            cell.shot.launch.spin_rpm,
             u.to_display(Quantity::Long, cell.shot.carry_m)
         );
     }

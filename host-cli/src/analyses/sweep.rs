@@ -137,10 +137,10 @@ fn table(r: &Sweep, u: Units) -> String {
                 let _ = write!(
                     s,
                     " {:>8.1} {:>7.2} {:>7.2} {:>7.0} {:>8.1} {:>7.1}",
-                    u.to_display(Quantity::Speed, shot.ball_speed_mps),
-                    shot.launch_angle_deg,
-                    shot.launch_direction_deg,
-                    shot.spin_rpm,
+                    u.to_display(Quantity::Speed, shot.launch.ball_speed_mps),
+                    shot.launch.launch_angle_deg,
+                    shot.launch.launch_direction_deg,
+                    shot.launch.spin_rpm,
                     u.to_display(Quantity::Long, shot.carry_m),
                     u.to_display(Quantity::Long, shot.side_m)
                 );

@@ -381,7 +381,7 @@ impl Key {
             Kind::Tensor => parse_tensor(text).map(Value::Tensor).map_err(err),
             Kind::Preset => parse_preset(text).map(Value::Preset).map_err(err),
             Kind::Contact => crate::contact::parse(text).map(Value::Contact).map_err(err),
-            Kind::Aero => carry_lab::aero_file::resolve(text.trim())
+            Kind::Aero => crate::aero_file::resolve(text.trim())
                 .map(Value::Aero)
                 .map_err(err),
             Kind::Bool => parse_bool(text).map(Value::Bool).map_err(err),

@@ -248,7 +248,11 @@ fn process(
     failed
 }
 
-pub(crate) fn open(input: &PathBuf) -> Result<(Box<dyn Read>, Option<u64>), InputError> {
+/// Opens `input` (`-`: standard input), with its size when it is a file.
+///
+/// # Errors
+/// A file that cannot be opened, naming `input`.
+pub fn open(input: &PathBuf) -> Result<(Box<dyn Read>, Option<u64>), InputError> {
     if input.as_os_str() == "-" {
         return Ok((Box::new(std::io::stdin().lock()), None));
     }

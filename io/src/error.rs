@@ -8,11 +8,6 @@
 use carry_core::{Error, Field};
 use std::fmt;
 
-/// Exit status for invalid input (also clap's usage-error status).
-pub const EXIT_INPUT: u8 = 2;
-/// Exit status for an I/O failure (writing output, reading a file that exists).
-pub const EXIT_IO: u8 = 1;
-
 /// An invalid input: which option (snake_case key; several separated by `, `) and why.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct InputError {
