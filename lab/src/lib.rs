@@ -25,6 +25,7 @@ pub mod fit;
 pub mod ground_fit;
 pub mod normalize;
 pub mod optimize;
+pub mod request;
 pub mod setup;
 pub mod study;
 pub mod sweep;
