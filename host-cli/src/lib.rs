@@ -11,7 +11,6 @@ pub use carry_io::{batch, compute, contact, error, ground, params, report, scene
 pub mod cli;
 pub mod clubs;
 pub mod fit;
-pub mod fit_contact;
 pub mod plot;
 pub mod table;
 
