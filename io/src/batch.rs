@@ -62,24 +62,10 @@ pub fn applies(mode: Mode, key: Key) -> bool {
     }
 }
 
-/// The meaning of each input column.
 /// Whether the output has the ground's columns: the command line or the scene file names a
 /// ground, or the input has a ground column.
 fn ground_columns(job: &Job, cols: &Columns) -> bool {
-    !job.base.scene.ground.is_empty()
-        || cols.keys.iter().any(|(_, k)| {
-            matches!(
-                k,
-                Key::Ground
-                    | Key::Stimp
-                    | Key::GroundSlope
-                    | Key::GroundSlopeDirection
-                    | Key::GroundRestitution
-                    | Key::GroundFriction
-                    | Key::RollingResistance
-                    | Key::CraterScale
-            )
-        })
+    !job.base.scene.ground.is_empty() || cols.keys.iter().any(|(_, k)| k.is_ground())
 }
 
 /// The meaning of each input column.

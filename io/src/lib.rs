@@ -14,7 +14,8 @@
 //!   [`report::Report`];
 //! * [`report`]: the result records (the JSON contract) and the CSV columns;
 //! * [`batch`]: many shots from a CSV file, in parallel;
-//! * [`error`]: [`error::InputError`], one line naming the option at fault.
+//! * [`error`]: [`error::InputError`], one line naming the option at fault;
+//! * [`choice`]: the options that take one of a few names, parsed without clap.
 //!
 //! No command-line grammar lives here: the optional `clap` feature only derives
 //! `clap::ValueEnum` on the option enums for the CLI. docs/architecture.md shows where this
@@ -22,6 +23,7 @@
 
 pub mod aero_file;
 pub mod batch;
+pub mod choice;
 pub mod compute;
 pub mod contact;
 pub mod error;

@@ -63,38 +63,7 @@ pub fn print_notes(notes: &[String]) {
     }
 }
 
-/// Parses `a,b` (two finite numbers).
-///
-/// # Errors
-/// The reason, for a message.
-pub fn parse_pair(text: &str) -> Result<[f64; 2], String> {
-    let v: Vec<f64> = text
-        .split(',')
-        .map(crate::params::parse_finite)
-        .collect::<Result<_, _>>()?;
-    match v.as_slice() {
-        &[a, b] => Ok([a, b]),
-        _ => Err(format!("'{}' must be two numbers: low,high", text.trim())),
-    }
-}
-
-/// Parses `from,to,step` (three finite numbers).
-///
-/// # Errors
-/// The reason, for a message.
-pub fn parse_triple(text: &str) -> Result<[f64; 3], String> {
-    let v: Vec<f64> = text
-        .split(',')
-        .map(crate::params::parse_finite)
-        .collect::<Result<_, _>>()?;
-    match v.as_slice() {
-        &[a, b, c] => Ok([a, b, c]),
-        _ => Err(format!(
-            "'{}' must be three numbers: from,to,step",
-            text.trim()
-        )),
-    }
-}
+pub use carry_io::params::{parse_pair, parse_triple};
 
 /// A chart writer of the lab.
 type Draw<T> = fn(&std::path::Path, &T) -> Result<(), Box<dyn std::error::Error>>;
