@@ -1,8 +1,8 @@
 //! `carry fit`: the grammar of a fit request ([`carry_lab::fit::request`], which reads the
 //! files, fits, and formats the report).
 
-use crate::error::Failure;
-use crate::units::Units;
+use carry_io::error::Failure;
+use carry_io::units::Units;
 use carry_lab::fit::request::{self, FitRequest};
 use clap::Args;
 use std::path::PathBuf;

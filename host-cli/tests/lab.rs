@@ -321,41 +321,6 @@ fn help_names_the_options() {
     }
 }
 
-/// `carry_cli::analysis` (what the Python package calls) returns exactly what the command
-/// prints, and fails with the same one line the command prints on stderr.
-#[test]
-fn analysis_returns_what_the_command_prints() {
-    let args = [
-        "normalize",
-        "--ball-speed",
-        "70",
-        "--temperature",
-        "35",
-        "--json",
-    ];
-    let printed = run(&args).stdout;
-    let returned =
-        carry_cli::analysis(std::iter::once("carry").chain(args)).expect("normalize runs");
-    assert_eq!(returned, printed);
-    let bad = [
-        "optimize",
-        "--club",
-        "7iron",
-        "--dynamic-loft-range",
-        "30,20",
-        "--json",
-    ];
-    let line = run(&bad).stderr;
-    match carry_cli::analysis(std::iter::once("carry").chain(bad)) {
-        Err(carry_cli::AnalysisFailure::Input(m)) => assert_eq!(format!("carry: {m}\n"), line),
-        other => panic!("{other:?}"),
-    }
-    assert!(matches!(
-        carry_cli::analysis(["carry", "shot", "--json"]),
-        Err(carry_cli::AnalysisFailure::Input(_))
-    ));
-}
-
 /// Issue 24, item 5: an angle given to `carry optimize` holds that variable; with its
 /// range too, the range wins and one note says so on stderr.
 #[test]

@@ -2,8 +2,8 @@
 
 use super::{ShotArgs, output, write_svg};
 use crate::cli::OutputArgs;
-use crate::error::Failure;
-use crate::units::{Quantity, Units};
+use carry_io::error::Failure;
+use carry_io::units::{Quantity, Units};
 use carry_lab::dispersion::{self, Dispersion};
 use carry_lab::request::{DispersionRequest, NoiseSd};
 use clap::Args;

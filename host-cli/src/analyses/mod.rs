@@ -9,10 +9,10 @@ mod output;
 pub mod sweep;
 
 use crate::cli::{ClubArgs, DeliveryArgs, IntegratorArgs, PrecisionArgs, SceneArgs, SolverArgs};
-use crate::compute::Numerics;
-use crate::error::{Failure, InputError};
-use crate::params::Params;
-use crate::units::Units;
+use carry_io::compute::Numerics;
+use carry_io::error::{Failure, InputError};
+use carry_io::params::Params;
+use carry_io::units::Units;
 pub use carry_lab::request::{failure, setup, with_setup};
 
 /// Everything of a shot the lab commands share: delivery, club, scene, numerics.

@@ -2,10 +2,10 @@
 
 use super::output;
 use crate::cli::{BallArgs, IntegratorArgs, LaunchArgs, OutputArgs, PrecisionArgs, SceneArgs};
-use crate::compute::Numerics;
-use crate::error::Failure;
-use crate::params::Params;
-use crate::units::{Quantity, Units};
+use carry_io::compute::Numerics;
+use carry_io::error::Failure;
+use carry_io::params::Params;
+use carry_io::units::{Quantity, Units};
 use carry_lab::normalize::{self, Direction, Normalized};
 use clap::{Args, ValueEnum};
 use std::fmt::Write as _;

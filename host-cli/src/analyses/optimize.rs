@@ -3,8 +3,8 @@
 use super::dispersion::{MonteCarloArgs, NoiseArgs};
 use super::{ShotArgs, output, parse_pair, parse_triple, print_notes, write_svg};
 use crate::cli::OutputArgs;
-use crate::error::Failure;
-use crate::units::{Quantity, Units};
+use carry_io::error::Failure;
+use carry_io::units::{Quantity, Units};
 use carry_lab::optimize::{self, Chart, Optimum};
 use carry_lab::request::{self, ChartGrid, OptimizeOutcome, OptimizeRequest};
 use clap::{Args, ValueEnum};

@@ -2,8 +2,8 @@
 
 use super::{ShotArgs, output, parse_triple, print_notes, write_svg};
 use crate::cli::OutputArgs;
-use crate::error::Failure;
-use crate::units::{Quantity, Units};
+use carry_io::error::Failure;
+use carry_io::units::{Quantity, Units};
 use carry_lab::request::SweepRequest;
 use carry_lab::sweep::{self, Sweep};
 use clap::Args;
