@@ -155,6 +155,13 @@ pub enum Cell {
     Missing,
 }
 
+/// The three column names of a vector `v`: `v_x`, `v_y`, `v_z`.
+macro_rules! xyz {
+    ($v:literal) => {
+        [concat!($v, "_x"), concat!($v, "_y"), concat!($v, "_z")]
+    };
+}
+
 fn real<F: FnMut(&'static str, Cell)>(f: &mut F, name: &'static str, x: Option<f64>) {
     f(name, x.map_or(Cell::Missing, Cell::Real));
 }
@@ -193,49 +200,17 @@ pub fn visit_fields<F: FnMut(&'static str, Cell)>(
     if mode != Mode::Flight {
         real(f, "smash_factor", l.and_then(|l| l.smash_factor));
     }
-    vector(
-        f,
-        [
-            "ball_velocity_mps_x",
-            "ball_velocity_mps_y",
-            "ball_velocity_mps_z",
-        ],
-        l.map(|l| l.ball_velocity_mps),
-    );
-    vector(
-        f,
-        [
-            "ball_spin_radps_x",
-            "ball_spin_radps_y",
-            "ball_spin_radps_z",
-        ],
-        l.map(|l| l.ball_spin_radps),
-    );
+    vector(f, xyz!("ball_velocity_mps"), l.map(|l| l.ball_velocity_mps));
+    vector(f, xyz!("ball_spin_radps"), l.map(|l| l.ball_spin_radps));
     if mode != Mode::Flight {
         let c = r.and_then(|r| r.club_after);
         vector(
             f,
-            [
-                "club_after_velocity_mps_x",
-                "club_after_velocity_mps_y",
-                "club_after_velocity_mps_z",
-            ],
+            xyz!("club_after_velocity_mps"),
             c.map(|c| c.velocity_mps),
         );
-        vector(
-            f,
-            [
-                "club_after_spin_radps_x",
-                "club_after_spin_radps_y",
-                "club_after_spin_radps_z",
-            ],
-            c.map(|c| c.spin_radps),
-        );
-        vector(
-            f,
-            ["impulse_ns_x", "impulse_ns_y", "impulse_ns_z"],
-            r.and_then(|r| r.impulse_ns),
-        );
+        vector(f, xyz!("club_after_spin_radps"), c.map(|c| c.spin_radps));
+        vector(f, xyz!("impulse_ns"), r.and_then(|r| r.impulse_ns));
     }
     if mode == Mode::Impact {
         return;
@@ -252,21 +227,13 @@ pub fn visit_fields<F: FnMut(&'static str, Cell)>(
     real(f, "land_spin_rpm", g.map(|g| g.land_spin_rpm));
     vector(
         f,
-        [
-            "landing_position_m_x",
-            "landing_position_m_y",
-            "landing_position_m_z",
-        ],
+        xyz!("landing_position_m"),
         g.map(|g| g.landing_position_m),
     );
     count(f, "force_evaluations", g.map(|g| g.force_evaluations));
     vector(
         f,
-        [
-            "landing_velocity_mps_x",
-            "landing_velocity_mps_y",
-            "landing_velocity_mps_z",
-        ],
+        xyz!("landing_velocity_mps"),
         g.map(|g| g.landing_velocity_mps),
     );
     real(f, "air_density_kgm3", g.map(|g| g.air_density_kgm3));
@@ -279,15 +246,7 @@ pub fn visit_fields<F: FnMut(&'static str, Cell)>(
     real(f, "total_m", h.map(|h| h.total_m));
     real(f, "roll_m", h.map(|h| h.roll_m));
     count(f, "bounces", h.map(|h| h.bounces));
-    vector(
-        f,
-        [
-            "rest_position_m_x",
-            "rest_position_m_y",
-            "rest_position_m_z",
-        ],
-        h.map(|h| h.rest_position_m),
-    );
+    vector(f, xyz!("rest_position_m"), h.map(|h| h.rest_position_m));
     real(f, "time_to_rest_s", h.map(|h| h.time_to_rest_s));
     f(
         "still_rolling",
