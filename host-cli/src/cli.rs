@@ -434,7 +434,9 @@ pub struct BatchArgs {
     /// Input CSV (`-` for standard input). Header: option names in snake_case (club_speed,
     /// attack_angle, impact_toe, …; vectors as one quoted "x,y,z" field or _x, _y, _z
     /// columns; `club` takes a preset name). Missing columns take the command-line values
-    /// or the defaults. Values are in the units of --units.
+    /// or the defaults. Values are in the units of --units. Another `carry batch`'s output
+    /// reads as input: its launch columns (ball_speed_mps, launch_angle_deg, …; SI) are
+    /// used, a row with an error stays one, the other result columns are ignored.
     #[arg(long, short, value_name = "FILE.csv")]
     pub input: PathBuf,
     /// Worker threads (default: all cores).
