@@ -364,6 +364,26 @@ fn optimize_holds_a_given_angle_and_a_range_wins_with_a_note() {
     assert_eq!(v["flatness"].as_array().map(Vec::len), Some(2));
 }
 
+/// Noise options given to a search that does not use them are noted.
+#[test]
+fn optimize_notes_noise_it_does_not_use() {
+    let r = run(&[
+        "optimize",
+        "--dynamic-loft-range",
+        "8,20",
+        "--face-angle-sd",
+        "2",
+        "--json",
+    ]);
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    assert_eq!(r.stderr.lines().count(), 1, "{}", r.stderr);
+    assert!(
+        r.stderr.contains("--face-angle-sd is ignored"),
+        "{}",
+        r.stderr
+    );
+}
+
 /// The sweep's swing sets the delivery: a delivery option given to it is noted, not
 /// silently dropped.
 #[test]

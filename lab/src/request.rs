@@ -471,6 +471,25 @@ impl OptimizeRequest {
         n: &Numerics,
         notes: &mut Vec<String>,
     ) -> Result<OptimizeOutcome, Failure> {
+        if self.objective != ObjectiveChoice::Dispersion {
+            let sd = &self.noise;
+            for (key, x) in NOISE_KEYS.iter().zip([
+                sd.face_angle_sd,
+                sd.club_path_sd,
+                sd.attack_angle_sd,
+                sd.dynamic_loft_sd,
+                sd.club_speed_sd,
+                sd.impact_height_sd,
+                sd.impact_toe_sd,
+            ]) {
+                if x != 0.0 {
+                    notes.push(ignored(key, "only --objective dispersion uses the noise"));
+                }
+            }
+            if self.shots.is_some() {
+                notes.push(ignored("shots", "only --objective dispersion flies shots"));
+            }
+        }
         // A smooth objective unless the user chose the numerics.
         let smooth = n.integrator == IntegratorChoice::Dp45 && n.tolerance.is_none();
         let mut notes32 = Vec::new();
