@@ -28,6 +28,7 @@ pub mod contact;
 pub mod convention;
 pub mod delivery;
 pub mod error;
+pub mod estimate;
 pub mod face;
 pub mod geometry;
 pub mod impact;
