@@ -131,7 +131,7 @@ impl<T: Real> BallData<T> {
 }
 
 /// What the device measured of the club (each `None` when not measured). SI.
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct ClubData<T> {
     /// Club head speed (m/s).
@@ -144,6 +144,19 @@ pub struct ClubData<T> {
     pub face_angle_rad: Option<T>,
     /// Dynamic loft at the contact point (rad).
     pub dynamic_loft_rad: Option<T>,
+}
+
+impl<T> Default for ClubData<T> {
+    /// Nothing measured.
+    fn default() -> Self {
+        Self {
+            club_speed_mps: None,
+            attack_angle_rad: None,
+            club_path_rad: None,
+            face_angle_rad: None,
+            dynamic_loft_rad: None,
+        }
+    }
 }
 
 /// 1σ measurement noise of every number the estimator may be given.
