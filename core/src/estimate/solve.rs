@@ -9,10 +9,14 @@
 //!
 //! The prior `N(μ, s²)` and a measured club datum `N(c, σ_c²)` on the same unknown combine
 //! into one quadratic term, `q = 1/s² + 1/σ_c²`, `m = (μ/s² + c/σ_c²)/q`. `J` is the forward
-//! difference of the normalised residuals with steps `√ε · unit`. The iteration stops when
-//! every step is below `√ε · unit` (the Jacobian's own resolution) or when no damping makes
-//! the cost fall (stationary to the precision); it fails with [`Error::NoConvergence`]
-//! after the budget. The posterior covariance is `A⁻¹` at the last Jacobian; each 1σ is
+//! difference of the normalised residuals with steps `√ε · unit`. Two additions to plain
+//! Levenberg–Marquardt, both for the prior-dominated directions where the residuals' own
+//! curvature matters: a secant estimate `S` of that curvature (Dennis, Gay & Welsch's
+//! NL2SOL update) added to `A` while the Newton step stays a descent direction, and a
+//! one-point line search along each accepted step. The iteration stops when the Newton
+//! step is below `tolerance` posterior σ (`√(−gᵀδ)`) or when no damping makes the cost fall
+//! (stationary to the precision); it fails with [`Error::NoConvergence`] after the budget.
+//! The posterior covariance is `A⁻¹` (Gauss–Newton) at the last Jacobian; each 1σ is
 //! `√(cᵀ A⁻¹ c)` for the datum's gradient `c`, from one Gaussian elimination per datum.
 
 use super::model::{Model, SPEED, Unknowns};
