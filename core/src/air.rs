@@ -12,6 +12,8 @@
 
 use crate::error::{Error, Field, Reason, Result};
 use crate::real::{Real, lit};
+/// Accepted temperature (°C) and altitude (m) ranges.
+pub use crate::units::{ALTITUDE_RANGE_M, TEMPERATURE_RANGE_C};
 use crate::validate::{finite, in_range, positive};
 
 /// Sea-level standard air density (kg/m³), the default of PHYSICS.md.
@@ -76,7 +78,8 @@ impl<T: Real> Weather<T> {
         match self.pressure {
             Pressure::Pa(p) => positive(p, Field::Pressure),
             Pressure::Altitude(h) => {
-                let h = in_range(h, lit(-5_000.0), lit(11_000.0), Field::Altitude)?;
+                let (low, high) = ALTITUDE_RANGE_M;
+                let h = in_range(h, lit(low), lit(high), Field::Altitude)?;
                 let base = T::one() - lit::<T>(2.25577e-5) * h;
                 Ok(lit::<T>(STANDARD_PRESSURE_PA) * base.powf(lit(5.25588)))
             }
@@ -99,12 +102,8 @@ impl<T: Real> Weather<T> {
     /// and the errors of [`Weather::pressure_pa`]; [`Field::Pressure`] with
     /// [`Reason::OutOfRange`] when the vapour pressure exceeds the total pressure.
     pub fn density_kgm3(&self) -> Result<T> {
-        let t = in_range(
-            self.temperature_c,
-            lit(-100.0),
-            lit(100.0),
-            Field::Temperature,
-        )?;
+        let (low, high) = TEMPERATURE_RANGE_C;
+        let t = in_range(self.temperature_c, lit(low), lit(high), Field::Temperature)?;
         let rh = in_range(self.relative_humidity, T::zero(), T::one(), Field::Humidity)?;
         let p = self.pressure_pa()?;
         let pv = rh * Self::saturation_vapour_pressure_pa(t);
@@ -131,7 +130,8 @@ impl<T: Real> Air<T> {
         match self {
             Self::Density(_) => Ok(lit(STANDARD_VISCOSITY_PAS)),
             Self::Weather(w) => {
-                let t = in_range(w.temperature_c, lit(-100.0), lit(100.0), Field::Temperature)?;
+                let (low, high) = TEMPERATURE_RANGE_C;
+                let t = in_range(w.temperature_c, lit(low), lit(high), Field::Temperature)?;
                 let tk = t + lit(273.15);
                 Ok(lit::<T>(1.458e-6) * tk * tk.sqrt() / (tk + lit(110.4)))
             }

@@ -3,9 +3,8 @@
 //! Frames (PHYSICS.md): the club frame C sits at the head's centre of mass; the face frame
 //! E is C rotated by the static loft α about +z_C (`R_CE = Rz(α)`), x_E out of the face.
 
+pub use crate::contact_law::ContactLaw;
 use crate::error::{Error, Field, Reason, Result};
-pub use crate::impact::contact_law::ContactLaw;
-pub use crate::presets::{PRESETS, Preset, TypicalDelivery};
 use crate::real::{Real, lit};
 use crate::validate::{
     finite, finite_matrix, finite_vector, in_range, positive, positive_or_infinite,
@@ -40,16 +39,6 @@ pub struct ClubSpec<T: Real> {
 }
 
 impl<T: Real> ClubSpec<T> {
-    /// The driver of PHYSICS.md (measured Ping i15 head) with the seed's rolling contact:
-    /// the model the golden files pin ([`crate::presets::REFERENCE_DRIVER`]). (The `driver`
-    /// preset, [`PRESETS`]`[0]`, is a modern head with the calibrated contact.)
-    #[must_use]
-    pub fn driver() -> Self {
-        let mut spec = crate::presets::REFERENCE_DRIVER.spec();
-        spec.contact = ContactLaw::Rolling;
-        spec
-    }
-
     /// Validates every parameter and precomputes what the solvers need.
     ///
     /// # Errors
@@ -247,6 +236,7 @@ impl<T: Real> ClubHead<T> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::presets::{PRESETS, Preset};
 
     #[test]
     fn presets_validate_in_both_precisions() {

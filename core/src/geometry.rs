@@ -8,8 +8,8 @@ use nalgebra::{Matrix3, Vector3};
 /// In single precision and for `|x| ≤ π/4` (every delivery and launch angle in practice) it
 /// evaluates Cephes' single-precision minimax polynomials (S. L. Moshier, Cephes Math
 /// Library, `sinf.c`/`cosf.c`; about 1 ulp on that interval) in f32: `libm`'s `sincosf`
-/// evaluates its kernel in f64, which a Cortex-M4F does in software (~2,000 instructions a
-/// call against ~20). In double precision, or for larger angles, it is `libm`'s `sin_cos`.
+/// evaluates its kernel in f64, which a Cortex-M4F does in software (docs/firmware.md
+/// compares the two). In double precision, or for larger angles, it is `libm`'s `sin_cos`.
 /// Deterministic either way: the same bits on every target.
 #[inline]
 #[must_use]
@@ -37,9 +37,9 @@ pub fn sin_cos<T: Real>(x: T) -> (T, T) {
 /// `(sin x, cos x)` for angles that are usually small (a crater tilt), in both precisions:
 /// for `|x| ≤ π/4`, Cephes' minimax polynomials (S. L. Moshier, Cephes Math Library,
 /// `sin.c` in double precision, about 1 ulp; [`sin_cos`]'s single-precision ones in `f32`);
-/// otherwise libm. libm's double `sincos` reduces the argument first (~70 instructions and
-/// a long dependency chain on x86-64). Not used on the golden impact path, whose `f64`
-/// rotations stay libm's.
+/// otherwise libm. libm's double `sincos` reduces the argument first, a long dependency
+/// chain (docs/ground.md). Not used on the golden impact path, whose `f64` rotations stay
+/// libm's.
 #[inline]
 #[must_use]
 pub fn sin_cos_small<T: Real>(x: T) -> (T, T) {
@@ -100,10 +100,10 @@ const ATAN_A: [f64; 8] = [
 /// atan z ≈ z·(a₁ + a₃z² + … + a₁₅z¹⁴),  0 ≤ z ≤ 1,  |ε| ≤ 2·10⁻⁸ rad
 /// ```
 ///
-/// on `z = min/max` of the two, reflected through `π/2 − atan(1/z)` when `y > x` (measured
-/// within 4·10⁻⁸ rad of libm, rounding included; 3·10⁻⁷ in `f32`). One
-/// division and eight multiply–adds: libm's `atan2f` costs ~100 instructions on a
-/// Cortex-M4F. `0` for `(0, 0)`; NaN in, NaN out.
+/// on `z = min/max` of the two, reflected through `π/2 − atan(1/z)` when `y > x` (within
+/// 4·10⁻⁸ rad of libm, rounding included; 3·10⁻⁷ in `f32`). One division and eight
+/// multiply–adds, where libm's `atan2f` is a long call on a Cortex-M4F (docs/ground.md).
+/// `0` for `(0, 0)`; NaN in, NaN out.
 #[inline]
 #[must_use]
 pub fn atan2_first_quadrant<T: Real>(y: T, x: T) -> T {
@@ -220,7 +220,7 @@ mod tests {
                 }
             }
         }
-        assert!(worst <= 4e-8, "{worst}"); // A&S: 2e-8; measured 3.8e-8 with the rounding
+        assert!(worst <= 4e-8, "{worst}"); // A&S: 2e-8, plus the rounding
         assert_eq!(atan2_first_quadrant(0.0_f64, 0.0), 0.0);
         assert_eq!(
             atan2_first_quadrant(5.0_f64, 0.0),

@@ -17,6 +17,12 @@
 //! frames and equations follow the project's physics contract (see the README's
 //! "Model" section). SI units inside; [`units`] converts at the edges.
 //!
+//! The modules are layered: each imports only lower ones, with no import circle (CI checks
+//! it with `.ci/core-layers.sh`). Below the flight, [`trajectory`] holds the types every
+//! stage shares, [`aero`] the scene's force field and the right-hand side, [`integrator`]
+//! the integrators, [`ground`] the run-out and its hops; [`scene`] assembles them and
+//! [`flight`] runs them. [`presets`] sit above the club, the impact and the conventions.
+//!
 //! Every public entry point validates its inputs once and returns a typed
 //! [`Error`]; nothing panics or returns NaN.
 #![no_std]
@@ -25,6 +31,7 @@
 pub mod ball;
 pub mod club;
 pub mod contact;
+pub mod contact_law;
 pub mod convention;
 pub mod delivery;
 pub mod error;
@@ -45,7 +52,9 @@ pub mod aero;
 pub mod air;
 pub mod flight;
 pub mod ground;
+pub mod integrator;
 pub mod scene;
+pub mod trajectory;
 pub mod wind;
 
 pub use air::{Air, Pressure, Weather};
@@ -56,10 +65,11 @@ pub use wind::Wind;
 // --- end flight ---
 
 pub use ball::{Ball, BallMotion};
-pub use club::{ClubHead, ClubSpec, ContactLaw, PRESETS, Preset};
+pub use club::{ClubHead, ClubSpec, ContactLaw};
 pub use convention::DeliveryConvention;
 pub use delivery::{ClubMotion, Delivery, FaceLocation, Strike};
 pub use error::{Error, Field, Reason, Result};
 pub use impact::{ImpactOutcome, Solver};
 pub use launch::{Launch, LaunchMetrics};
+pub use presets::{PRESETS, Preset};
 pub use real::Real;

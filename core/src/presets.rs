@@ -74,6 +74,55 @@ impl TypicalDelivery {
     }
 }
 
+/// The parts of a delivery a caller gave (launch-monitor terms: SI, radians); `None`
+/// takes the typical value ([`TypicalDelivery::completed`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct GivenDelivery<T> {
+    /// Club speed (m/s).
+    pub club_speed_mps: Option<T>,
+    /// Attack angle (rad, + up).
+    pub attack_angle_rad: Option<T>,
+    /// Dynamic loft (rad), in [`TYPICAL_CONVENTION`].
+    pub dynamic_loft_rad: Option<T>,
+    /// Impact height up the face from its centre (m).
+    pub impact_height_m: Option<T>,
+}
+
+impl<T> Default for GivenDelivery<T> {
+    /// Nothing given.
+    fn default() -> Self {
+        Self {
+            club_speed_mps: None,
+            attack_angle_rad: None,
+            dynamic_loft_rad: None,
+            impact_height_m: None,
+        }
+    }
+}
+
+impl TypicalDelivery {
+    /// The rule of a named club, defined once for every shell (the CLI's `--club NAME`, the
+    /// C API, Python, the lab): club speed, attack angle, dynamic loft and impact height
+    /// are the ones `given`, else this typical delivery's. Square face and path, no lie, no
+    /// club spin, centred across the face, in [`TYPICAL_CONVENTION`]: the caller sets what
+    /// else it has. With nothing given it is [`TypicalDelivery::delivery`].
+    #[must_use]
+    pub fn completed<T: Real>(&self, given: &GivenDelivery<T>) -> Delivery<T> {
+        let typical = self.delivery::<T>();
+        Delivery {
+            club_speed_mps: given.club_speed_mps.unwrap_or(typical.club_speed_mps),
+            attack_angle_rad: given.attack_angle_rad.unwrap_or(typical.attack_angle_rad),
+            dynamic_loft_rad: given.dynamic_loft_rad.unwrap_or(typical.dynamic_loft_rad),
+            location: FaceLocation {
+                height_m: given.impact_height_m.unwrap_or(typical.location.height_m),
+                ..typical.location
+            },
+            ..typical
+        }
+    }
+}
+
 /// Where a ball lying on firm turf meets a flat face of dynamic loft `δ`, from the face
 /// centre (m): the contact point is `R (1 − sin δ)` above the ground (the ball's centre at
 /// height R, the normal tilted up by δ), so irons and wedges strike below the face centre
@@ -137,6 +186,19 @@ pub const REFERENCE_DRIVER: Preset = Preset {
         impact_height_m: 0.003,
     },
 };
+
+impl<T: Real> ClubSpec<T> {
+    /// The driver of PHYSICS.md (measured Ping i15 head) with the seed's rolling contact:
+    /// the model the golden files pin ([`REFERENCE_DRIVER`]). (The `driver` preset,
+    /// [`PRESETS`]`[0]`, is a modern head with the calibrated contact.) Defined here, above
+    /// the club, so that [`crate::club`] does not import its presets.
+    #[must_use]
+    pub fn driver() -> Self {
+        let mut spec = REFERENCE_DRIVER.spec();
+        spec.contact = ContactLaw::Rolling;
+        spec
+    }
+}
 
 /// The built-in club presets, longest club first.
 pub const PRESETS: [Preset; 13] = [
@@ -435,6 +497,37 @@ mod tests {
         }
         assert_eq!(Preset::find("lw58").map(|p| p.loft_deg), Some(58.0));
         assert!(Preset::find("putter").is_none());
+    }
+
+    /// The named club's rule: nothing given is the typical delivery, bit for bit, in both
+    /// precisions; each value given replaces exactly its own.
+    #[test]
+    fn completed_takes_what_is_given_and_the_typical_rest() {
+        fn check<T: Real + core::fmt::Debug>(p: &Preset) {
+            let t = p.typical;
+            assert_eq!(
+                t.completed::<T>(&GivenDelivery::default()),
+                t.delivery::<T>()
+            );
+            let given = GivenDelivery {
+                club_speed_mps: Some(lit::<T>(41.0)),
+                attack_angle_rad: Some(lit::<T>(-0.07)),
+                dynamic_loft_rad: None,
+                impact_height_m: Some(lit::<T>(0.004)),
+            };
+            let d = t.completed(&given);
+            let typical = t.delivery::<T>();
+            assert_eq!(d.club_speed_mps, lit::<T>(41.0));
+            assert_eq!(d.attack_angle_rad, lit::<T>(-0.07));
+            assert_eq!(d.location.height_m, lit::<T>(0.004));
+            assert_eq!(d.dynamic_loft_rad, typical.dynamic_loft_rad);
+            assert_eq!(d.location.toe_m, typical.location.toe_m);
+            assert_eq!(d.face_angle_rad, typical.face_angle_rad);
+        }
+        for p in PRESETS.iter().chain([&REFERENCE_DRIVER]) {
+            check::<f64>(p);
+            check::<f32>(p);
+        }
     }
 
     /// Flat-faced clubs' typical strikes are where a ball on firm turf meets the face at

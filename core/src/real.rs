@@ -24,8 +24,8 @@ pub fn to_f64<T: Real>(x: T) -> f64 {
 
 /// The larger of `a` and `b`, or the one that is not NaN: C's `fmax`, written as a
 /// comparison so that it inlines. `RealField::max` calls libm's `fmaxf`/`fmax` out of line,
-/// about 10 instructions a call on the Cortex-M4F, where the integrator calls it in every
-/// step. Same result as `a.max(b)`, sign of equal zeros aside.
+/// a call in every step of the integrator on the Cortex-M4F (docs/firmware.md). Same
+/// result as `a.max(b)`, sign of equal zeros aside.
 #[inline(always)]
 #[must_use]
 pub fn larger<T: Real>(a: T, b: T) -> T {

@@ -7,57 +7,24 @@
 //! no wind evaluation without wind, no air-speed `sqrt` in a vacuum, no spin-decay term
 //! without decay. See docs/flight.md for the measured cost per effect.
 
-use crate::aero::{AeroModel, PreparedAero};
+pub use crate::aero::Effects;
+use crate::aero::{AeroModel, ForceField};
 use crate::air::Air;
 use crate::ball::Ball;
 use crate::error::{Error, Field, Reason, Result};
 use crate::ground::{Ground, PreparedGround};
 use crate::real::{Real, lit};
 use crate::validate::{finite, finite_vector, non_negative, positive};
-use crate::wind::{Wind, WindField};
+use crate::wind::Wind;
 use nalgebra::Vector3;
 
-/// Standard gravity (m/s²).
-pub const STANDARD_GRAVITY_MPS2: f64 = 9.80665;
+pub use crate::units::STANDARD_GRAVITY_MPS2;
 /// Largest accepted |landing height| and |launch position component| (m): 100 km.
 pub const MAX_HEIGHT_M: f64 = 1.0e5;
 /// Largest accepted gravitational acceleration (m/s²): 100 g.
 pub const MAX_GRAVITY_MPS2: f64 = 1.0e3;
 /// Default flight time limit (s): far beyond any golf shot (an 80° wedge flies ~9 s).
 pub const DEFAULT_TIME_LIMIT_S: f64 = 60.0;
-
-/// Which aerodynamic effects a flight simulates (gravity always acts).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-#[cfg_attr(feature = "defmt", derive(defmt::Format))]
-pub struct Effects {
-    /// Aerodynamic drag.
-    pub drag: bool,
-    /// Magnus lift.
-    pub lift: bool,
-    /// Spin decay from the aerodynamic torque (otherwise the spin stays at its launch value).
-    pub spin_decay: bool,
-}
-
-impl Effects {
-    /// The full model: drag, lift and spin decay.
-    pub const ALL: Self = Self {
-        drag: true,
-        lift: true,
-        spin_decay: true,
-    };
-    /// Gravity only: a vacuum parabola.
-    pub const GRAVITY_ONLY: Self = Self {
-        drag: false,
-        lift: false,
-        spin_decay: false,
-    };
-}
-
-impl Default for Effects {
-    fn default() -> Self {
-        Self::ALL
-    }
-}
 
 /// Everything about a flight that is not the ball or its launch.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -109,11 +76,8 @@ impl<T: Real> Default for Scene<T> {
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct PreparedScene<T: Real> {
-    pub(crate) effects: Effects,
-    pub(crate) gravity: T,
-    /// The aerodynamic model per unit mass (`A = ½ρπR²/m_b` folded in).
-    pub(crate) aero: PreparedAero<T>,
-    pub(crate) wind: WindField<T>,
+    /// The forces: effects, gravity, the aerodynamic model per unit mass, the wind.
+    pub(crate) field: ForceField<T>,
     pub(crate) landing_height: T,
     pub(crate) time_limit: T,
     pub(crate) launch_position: Vector3<T>,
@@ -158,10 +122,12 @@ impl<T: Real> Scene<T> {
             None => None,
         };
         Ok(PreparedScene {
-            effects: self.effects,
-            gravity,
-            aero,
-            wind,
+            field: ForceField {
+                effects: self.effects,
+                gravity,
+                aero,
+                wind,
+            },
             landing_height,
             time_limit,
             launch_position,
@@ -181,7 +147,7 @@ impl<T: Real> PreparedScene<T> {
     /// The effects simulated.
     #[must_use]
     pub fn effects(&self) -> Effects {
-        self.effects
+        self.field.effects
     }
 
     /// The validated ground, if the scene has one.
@@ -194,30 +160,6 @@ impl<T: Real> PreparedScene<T> {
     #[must_use]
     pub fn landing_height_m(&self) -> T {
         self.landing_height
-    }
-
-    /// Whether a wind profile is singular near height `y`: its derivative
-    /// `k·w_ref·y^(k−1)/h_ref^k` is unbounded at the ground, and steep up to ~h_ref.
-    pub(crate) fn profile_singular_at(&self, y: T) -> bool {
-        match self.wind {
-            WindField::Profile {
-                inv_reference_height,
-                exponent,
-                ..
-            } => exponent > T::zero() && y * inv_reference_height < T::one(),
-            _ => false,
-        }
-    }
-
-    /// Whether any wind is evaluated (an aerodynamic effect and a wind).
-    #[inline(always)]
-    pub(crate) fn has_wind(&self) -> bool {
-        !matches!(self.wind, WindField::None)
-    }
-
-    /// Whether the wind changes with height (a profile).
-    pub(crate) fn wind_varies_with_height(&self) -> bool {
-        matches!(self.wind, WindField::Profile { .. })
     }
 }
 
@@ -320,10 +262,10 @@ mod tests {
             panic!()
         };
         let a = 0.5 * 1.225 * core::f64::consts::PI * 0.021336_f64.powi(2) / 0.04593;
-        let crate::aero::model::Forces::Linear { drag_v, .. } = p.aero.forces else {
+        let crate::aero::model::Forces::Linear { drag_v, .. } = p.field.aero.forces else {
             panic!()
         };
         assert!((drag_v - a * 0.171).abs() < 1e-15);
-        assert!(!p.has_wind());
+        assert!(!p.field.has_wind());
     }
 }

@@ -1,6 +1,10 @@
-//! Unit conversions for the edges. Inside, the core is SI: m, s, kg, rad, rad/s.
+//! Unit conversions for the edges, and the constants several layers share. Inside, the
+//! core is SI: m, s, kg, rad, rad/s.
 //!
 //! Launch monitors speak degrees, rpm, mph and yards; convert with these at the boundary.
+//! The accepted input ranges below are the ones the core validates against (the modules
+//! that validate re-export them); shells quote them in their messages instead of copying
+//! the numbers.
 
 use crate::real::{Real, lit};
 
@@ -12,6 +16,18 @@ pub const M_PER_YARD: f64 = 0.9144;
 pub const M_PER_FOOT: f64 = 0.3048;
 /// rad/s per rpm (2π/60).
 pub const RADPS_PER_RPM: f64 = core::f64::consts::PI / 30.0;
+/// Standard gravity (m/s²; exact by definition, CGPM 1901).
+pub const STANDARD_GRAVITY_MPS2: f64 = 9.80665;
+
+/// Accepted stimp readings (m): 1 ft to 30 ft ([`crate::ground::Surface::Green`]).
+pub const STIMP_RANGE_M: (f64, f64) = (M_PER_FOOT, 30.0 * M_PER_FOOT);
+/// Steepest accepted ground (rad): 45° ([`crate::ground::Ground`]).
+pub const MAX_SLOPE_RAD: f64 = core::f64::consts::FRAC_PI_4;
+/// Accepted air temperatures (°C) ([`crate::air::Weather`]).
+pub const TEMPERATURE_RANGE_C: (f64, f64) = (-100.0, 100.0);
+/// Accepted altitudes (m): the standard atmosphere's troposphere and below
+/// ([`crate::air::Pressure::Altitude`]).
+pub const ALTITUDE_RANGE_M: (f64, f64) = (-5_000.0, 11_000.0);
 
 /// Degrees → radians.
 #[inline]

@@ -15,6 +15,8 @@
 mod cases;
 #[path = "../tests/support/golden.rs"]
 mod golden;
+#[path = "../../firmware/src/golden_input.rs"]
+mod golden_input;
 
 use carry_core::Integrator;
 use carry_core::real::{Real, lit, to_f64};

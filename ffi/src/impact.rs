@@ -152,7 +152,15 @@ impl<T: Real> CarryDelivery<T> {
     /// convention).
     #[must_use]
     pub fn typical(preset: &Preset) -> Self {
-        let d = preset.typical.delivery::<T>();
+        Self::from_delivery(
+            &preset.typical.delivery::<T>(),
+            carry_core::presets::TYPICAL_CONVENTION,
+        )
+    }
+
+    /// The C form of a core delivery read in `convention`.
+    #[must_use]
+    pub fn from_delivery(d: &Delivery<T>, convention: DeliveryConvention) -> Self {
         Self {
             club_speed_mps: d.club_speed_mps,
             attack_angle_rad: d.attack_angle_rad,
@@ -163,7 +171,7 @@ impl<T: Real> CarryDelivery<T> {
             club_spin_radps: d.club_spin_radps.into(),
             impact_height_m: d.location.height_m,
             impact_toe_m: d.location.toe_m,
-            convention: match carry_core::presets::TYPICAL_CONVENTION {
+            convention: match convention {
                 DeliveryConvention::SeedCentre => CARRY_CONVENTION_SEED_CENTRE,
                 DeliveryConvention::TrackMan => CARRY_CONVENTION_TRACKMAN,
             },

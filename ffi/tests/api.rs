@@ -7,6 +7,8 @@
 mod cases;
 #[path = "support/golden.rs"]
 mod golden;
+#[path = "../../firmware/src/golden_input.rs"]
+mod golden_input;
 
 use carry_core::aero::AeroModel;
 use carry_core::flight::{Recorder, Sample};

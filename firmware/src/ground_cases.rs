@@ -1,5 +1,6 @@
 //! Full shots with a ground (issue 12): club preset and delivery → impact → flight →
-//! bounces and roll to rest, on each surface, level and sloped.
+//! bounces and roll to rest, on each surface, level and sloped; and topped shots
+//! (issue 21), launched at or below the horizon, which meet the turf at once and run out.
 //!
 //! Like `cases.rs`, compiled into the firmware and `#[path]`-included by `build.rs`,
 //! which runs the same code on the host so that the on-target tests can demand bit
@@ -10,8 +11,8 @@ use carry_core::ground::{Ground, RunEnd, Surface};
 use carry_core::real::{Real, lit};
 use carry_core::scene::Scene;
 use carry_core::shot::{Fidelity, play};
-use carry_core::units::deg;
-use carry_core::{Ball, Delivery, Error, FaceLocation, Preset};
+use carry_core::units::{deg, rpm};
+use carry_core::{Ball, Delivery, Error, FaceLocation, Launch, Preset};
 
 /// One full shot with a ground.
 #[derive(Debug, Clone, Copy)]
@@ -26,10 +27,13 @@ pub struct GroundCase {
     pub stimp_ft: f64,
     pub slope_deg: f64,
     pub slope_direction_deg: f64,
+    /// A launch given directly instead of the club's (ball speed m/s, launch angle deg,
+    /// backspin rpm): a topped shot, launched from the turf at or below the horizon.
+    pub launch: Option<[f64; 3]>,
 }
 
 /// The on-target ground shots.
-pub const GROUND_CASES: [GroundCase; 6] = [
+pub const GROUND_CASES: [GroundCase; 8] = [
     GroundCase {
         name: "driver_fairway",
         club: "driver",
@@ -38,6 +42,7 @@ pub const GROUND_CASES: [GroundCase; 6] = [
         stimp_ft: 0.0,
         slope_deg: 0.0,
         slope_direction_deg: 0.0,
+        launch: None,
     },
     GroundCase {
         name: "driver_soft_uphill",
@@ -47,6 +52,7 @@ pub const GROUND_CASES: [GroundCase; 6] = [
         stimp_ft: 0.0,
         slope_deg: 3.0,
         slope_direction_deg: 20.0,
+        launch: None,
     },
     GroundCase {
         name: "7iron_rough",
@@ -56,6 +62,7 @@ pub const GROUND_CASES: [GroundCase; 6] = [
         stimp_ft: 0.0,
         slope_deg: 0.0,
         slope_direction_deg: 0.0,
+        launch: None,
     },
     GroundCase {
         name: "pw_green",
@@ -65,6 +72,7 @@ pub const GROUND_CASES: [GroundCase; 6] = [
         stimp_ft: 11.0,
         slope_deg: 0.0,
         slope_direction_deg: 0.0,
+        launch: None,
     },
     GroundCase {
         name: "pw_green_sidehill",
@@ -74,6 +82,7 @@ pub const GROUND_CASES: [GroundCase; 6] = [
         stimp_ft: 10.0,
         slope_deg: 2.0,
         slope_direction_deg: 90.0,
+        launch: None,
     },
     GroundCase {
         name: "lw_steep_green_rolls_on",
@@ -83,6 +92,29 @@ pub const GROUND_CASES: [GroundCase; 6] = [
         stimp_ft: 13.0,
         slope_deg: 8.0,
         slope_direction_deg: -120.0,
+        launch: None,
+    },
+    // A topped drive (100 mph ball, 2° below the horizon, 1,800 rpm) on the firm fairway.
+    GroundCase {
+        name: "topped_driver_fairway",
+        club: "driver",
+        club_speed_mps: 0.0,
+        surface: 0,
+        stimp_ft: 0.0,
+        slope_deg: 0.0,
+        slope_direction_deg: 0.0,
+        launch: Some([44.7, -2.0, 1800.0]),
+    },
+    // A thinned iron launched level into the rough, downhill.
+    GroundCase {
+        name: "thin_iron_at_horizon_rough",
+        club: "7iron",
+        club_speed_mps: 0.0,
+        surface: 2,
+        stimp_ft: 0.0,
+        slope_deg: 2.0,
+        slope_direction_deg: 180.0,
+        launch: Some([38.0, 0.0, 900.0]),
     },
 ];
 
@@ -130,20 +162,31 @@ impl GroundCase {
     /// # Errors
     /// The core's error ([`Error::InvalidInput`] for an unknown preset).
     pub fn outputs<T: Real>(&self) -> Result<[T; GROUND_OUTPUTS], Error> {
-        let preset = Preset::find(self.club).ok_or(Error::invalid(
-            carry_core::Field::Loft,
-            carry_core::Reason::OutOfRange,
-        ))?;
-        let club = preset.spec::<T>().validate()?;
-        let mut delivery = Delivery::square(lit(self.club_speed_mps), &club);
-        delivery.location = FaceLocation {
-            height_m: lit(0.003),
-            toe_m: lit(0.005),
-        };
         let ball = Ball::standard();
         let scene = self.scene::<T>().prepare(&ball)?;
-        let shot = play(&club, &ball, &delivery, &scene, &Fidelity::default(), None)?;
-        let f = shot.flight;
+        let fidelity = Fidelity::default();
+        let f = if let Some([speed_mps, angle_deg, backspin_rpm]) = self.launch {
+            let launch = Launch {
+                ball_speed_mps: lit(speed_mps),
+                launch_angle_rad: deg(lit(angle_deg)),
+                launch_direction_rad: T::zero(),
+                backspin_radps: rpm(lit(backspin_rpm)),
+                sidespin_radps: T::zero(),
+            };
+            scene.fly(&launch.ball_motion()?, &fidelity.integrator, None)?
+        } else {
+            let preset = Preset::find(self.club).ok_or(Error::invalid(
+                carry_core::Field::Loft,
+                carry_core::Reason::OutOfRange,
+            ))?;
+            let club = preset.spec::<T>().validate()?;
+            let mut delivery = Delivery::square(lit(self.club_speed_mps), &club);
+            delivery.location = FaceLocation {
+                height_m: lit(0.003),
+                toe_m: lit(0.005),
+            };
+            play(&club, &ball, &delivery, &scene, &fidelity, None)?.flight
+        };
         let g = f.ground.ok_or(Error::NoLanding)?;
         let n = |x: u32| -> T { lit(f64::from(x)) };
         Ok([

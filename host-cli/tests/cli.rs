@@ -3,6 +3,7 @@
 //! layout (snapshot).
 
 use assert_cmd::Command;
+use carry_golden::{FlightCase, FlightExpected, ImpactCase};
 use serde_json::Value;
 use std::path::PathBuf;
 
@@ -33,18 +34,6 @@ fn json(args: &[&str]) -> Value {
     serde_json::from_str(&r.stdout).expect("stdout is JSON")
 }
 
-fn golden(name: &str) -> Value {
-    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("../tests/golden")
-        .join(name);
-    let text = std::fs::read_to_string(path).expect("golden file");
-    let quoted = text
-        .replace("-Infinity", "\"-inf\"")
-        .replace("Infinity", "\"inf\"")
-        .replace("NaN", "\"nan\"");
-    serde_json::from_str(&quoted).expect("golden JSON")
-}
-
 fn num(v: &Value) -> f64 {
     match v {
         Value::Number(n) => n.as_f64().expect("f64"),
@@ -54,8 +43,7 @@ fn num(v: &Value) -> f64 {
 }
 
 /// A number as a command-line value, exactly (shortest round trip).
-fn arg(v: &Value) -> String {
-    let x = num(v);
+fn arg(x: f64) -> String {
     if x.is_nan() {
         "NaN".into()
     } else {
@@ -63,8 +51,8 @@ fn arg(v: &Value) -> String {
     }
 }
 
-fn arg3(v: &Value) -> String {
-    format!("{},{},{}", arg(&v[0]), arg(&v[1]), arg(&v[2]))
+fn arg3(v: [f64; 3]) -> String {
+    format!("{},{},{}", arg(v[0]), arg(v[1]), arg(v[2]))
 }
 
 fn temp_file(name: &str, contents: &str) -> PathBuf {
@@ -85,14 +73,9 @@ fn close(what: &str, got: f64, want: f64, tol: f64) {
 
 // ---------------------------------------------------------------- golden: impact
 
-fn impact_args(case: &Value) -> Vec<String> {
-    let c = &case["club"];
-    let d = &case["delivery"];
-    let b = &case["ball"];
-    let i = &c["inertia_kgm2"];
-    let inertia: Vec<String> = (0..3)
-        .flat_map(|r| (0..3).map(move |k| arg(&i[r][k])))
-        .collect();
+fn impact_args(case: &ImpactCase) -> Vec<String> {
+    let (c, d, b) = (&case.club, &case.delivery, &case.ball);
+    let inertia: Vec<String> = c.inertia_kgm2.iter().flatten().map(|&x| arg(x)).collect();
     // the golden files pin the seed's model: rolling contact, angles at the face centre
     let mut a: Vec<String> = vec![
         "impact".into(),
@@ -106,41 +89,40 @@ fn impact_args(case: &Value) -> Vec<String> {
         a.push(format!("--{name}"));
         a.push(value);
     };
-    opt("club-mass", arg(&c["mass_kg"]));
+    opt("club-mass", arg(c.mass_kg));
     opt("club-inertia", inertia.join(","));
-    opt("loft", arg(&c["loft_deg"]));
-    opt("roll", arg(&c["roll_radius_m"]));
-    opt("bulge", arg(&c["bulge_radius_m"]));
-    if let Some(a) = c.get("ellipsoid_a_m") {
+    opt("loft", arg(c.loft_deg));
+    opt("roll", arg(c.roll_radius_m));
+    opt("bulge", arg(c.bulge_radius_m));
+    if let Some(a) = c.face_depth_radius_m {
         opt("face-depth-radius", arg(a));
     }
-    opt("cg-to-face", arg3(&c["cg_to_face_m"]));
-    opt("ball-mass", arg(&b["mass_kg"]));
-    opt("ball-radius", arg(&b["radius_m"]));
-    opt("club-speed", arg(&d["club_speed_mps"]));
-    opt("attack-angle", arg(&d["attack_angle_deg"]));
-    opt("club-path", arg(&d["club_path_deg"]));
-    opt("face-angle", arg(&d["face_angle_deg"]));
-    opt("dynamic-loft", arg(&d["dynamic_loft_deg"]));
-    opt("lie", arg(&d["lie_deg"]));
-    opt("club-spin", arg3(&d["club_spin_radps"]));
-    opt("impact-height", arg(&d["impact_height_m"]));
-    opt("impact-toe", arg(&d["impact_toe_m"]));
-    opt("cor", arg(&d["cor"]));
+    opt("cg-to-face", arg3(c.cg_to_face_m));
+    opt("ball-mass", arg(b.mass_kg));
+    opt("ball-radius", arg(b.radius_m));
+    opt("club-speed", arg(d.club_speed_mps));
+    opt("attack-angle", arg(d.attack_angle_deg));
+    opt("club-path", arg(d.club_path_deg));
+    opt("face-angle", arg(d.face_angle_deg));
+    opt("dynamic-loft", arg(d.dynamic_loft_deg));
+    opt("lie", arg(d.lie_deg));
+    opt("club-spin", arg3(d.club_spin_radps));
+    opt("impact-height", arg(d.impact_height_m));
+    opt("impact-toe", arg(d.impact_toe_m));
+    opt("cor", arg(d.cor));
     a
 }
 
 #[test]
 fn impact_golden_cases_match_through_the_json_contract() {
-    let root = golden("impact.json");
-    let cases = root["cases"].as_array().expect("cases");
+    let cases = carry_golden::impact_cases().expect("impact.json");
     assert!(cases.len() >= 20);
-    for case in cases {
-        let name = case["name"].as_str().expect("name");
+    for case in &cases {
+        let name = &case.name;
         let args = impact_args(case);
         let args: Vec<&str> = args.iter().map(String::as_str).collect();
         let r = run(&args);
-        if let Some(kind) = case.get("expected_error").and_then(Value::as_str) {
+        if let Some(kind) = &case.expected_error {
             assert_eq!(r.code, 2, "{name}: {kind} must exit 2; stderr {}", r.stderr);
             assert_eq!(
                 r.stderr.lines().count(),
@@ -157,84 +139,76 @@ fn impact_golden_cases_match_through_the_json_contract() {
         }
         assert_eq!(r.code, 0, "{name}: {}", r.stderr);
         let out: Value = serde_json::from_str(&r.stdout).expect("JSON");
-        let e = &case["expected"];
+        let e = case.expected.expect("expected values");
         let l = &out["launch"];
         // Relative 1e-9, with the quantity's own scale for components near zero.
-        let check = |what: &str, got: &Value, want: &Value, scale: f64| {
-            let (g, w) = (num(got), num(want));
-            close(&format!("{name}: {what}"), g, w, 1e-9 * w.abs().max(scale));
+        let check = |what: &str, got: &Value, w: f64, scale: f64| {
+            close(
+                &format!("{name}: {what}"),
+                num(got),
+                w,
+                1e-9 * w.abs().max(scale),
+            );
         };
-        let speed = num(&e["ball_speed_mps"]);
-        let spin = num(&e["spin_rpm"]);
+        let spin = e.spin_rpm;
         check(
             "ball_speed_mps",
             &l["ball_speed_mps"],
-            &e["ball_speed_mps"],
+            e.ball_speed_mps,
             1.0,
         );
-        check("smash_factor", &l["smash_factor"], &e["smash_factor"], 1.0);
+        check("smash_factor", &l["smash_factor"], e.smash_factor, 1.0);
         check(
             "launch_angle_deg",
             &l["launch_angle_deg"],
-            &e["launch_angle_deg"],
+            e.launch_angle_deg,
             1.0,
         );
         check(
             "launch_direction_deg",
             &l["launch_direction_deg"],
-            &e["launch_direction_deg"],
+            e.launch_direction_deg,
             1.0,
         );
-        check("spin_rpm", &l["spin_rpm"], &e["spin_rpm"], 1.0);
-        check("backspin_rpm", &l["backspin_rpm"], &e["backspin_rpm"], spin);
-        check("sidespin_rpm", &l["sidespin_rpm"], &e["sidespin_rpm"], spin);
-        check(
-            "spin_axis_deg",
-            &l["spin_axis_deg"],
-            &e["spin_axis_deg"],
-            1.0,
-        );
+        check("spin_rpm", &l["spin_rpm"], e.spin_rpm, 1.0);
+        check("backspin_rpm", &l["backspin_rpm"], e.backspin_rpm, spin);
+        check("sidespin_rpm", &l["sidespin_rpm"], e.sidespin_rpm, spin);
+        check("spin_axis_deg", &l["spin_axis_deg"], e.spin_axis_deg, 1.0);
         let spin_radps = spin * std::f64::consts::PI / 30.0;
         for k in 0..3 {
             check(
                 "ball_velocity_mps",
                 &l["ball_velocity_mps"][k],
-                &e["ball_velocity_mps"][k],
-                speed,
+                e.ball_velocity_mps[k],
+                e.ball_speed_mps,
             );
             check(
                 "ball_spin_radps",
                 &l["ball_spin_radps"][k],
-                &e["ball_spin_radps"][k],
+                e.ball_spin_radps[k],
                 spin_radps.max(1.0),
             );
             check(
                 "club velocity",
                 &out["club_after"]["velocity_mps"][k],
-                &e["club_velocity_mps"][k],
+                e.club_velocity_mps[k],
                 10.0,
             );
             check(
                 "club spin",
                 &out["club_after"]["spin_radps"][k],
-                &e["club_spin_radps"][k],
+                e.club_spin_radps[k],
                 10.0,
             );
-            check(
-                "impulse_ns",
-                &out["impulse_ns"][k],
-                &e["impulse_ns"][k],
-                1.0,
-            );
+            check("impulse_ns", &out["impulse_ns"][k], e.impulse_ns[k], 1.0);
         }
     }
 }
 
 // ---------------------------------------------------------------- golden: flight
 
-fn flight_args(case: &Value) -> Vec<String> {
-    let l = &case["launch"];
-    let s = &case["scene"];
+fn flight_args(case: &FlightCase) -> Vec<String> {
+    let (l, s) = (&case.launch, &case.scene);
     // The golden files pin the seed's aerodynamics.
     let mut a: Vec<String> = vec![
         "flight".into(),
@@ -246,104 +220,84 @@ fn flight_args(case: &Value) -> Vec<String> {
         a.push(format!("--{name}"));
         a.push(value);
     };
-    opt("ball-speed", arg(&l["ball_speed_mps"]));
-    opt("launch-angle", arg(&l["launch_angle_deg"]));
-    opt("launch-direction", arg(&l["launch_direction_deg"]));
-    opt("backspin", arg(&l["backspin_rpm"]));
-    opt("sidespin", arg(&l["sidespin_rpm"]));
-    opt("landing-height", arg(&s["landing_height_m"]));
-    if let Some(w) = s.get("weather") {
-        opt("temperature", arg(&w["temperature_c"]));
-        opt(
-            "humidity",
-            format!("{:?}", num(&w["relative_humidity"]) * 100.0),
-        );
-        if let Some(p) = w.get("pressure_pa") {
+    opt("ball-speed", arg(l.ball_speed_mps));
+    opt("launch-angle", arg(l.launch_angle_deg));
+    opt("launch-direction", arg(l.launch_direction_deg));
+    opt("backspin", arg(l.backspin_rpm));
+    opt("sidespin", arg(l.sidespin_rpm));
+    opt("landing-height", arg(s.landing_height_m));
+    if let Some(w) = s.weather {
+        opt("temperature", arg(w.temperature_c));
+        opt("humidity", format!("{:?}", w.relative_humidity * 100.0));
+        if let Some(p) = w.pressure_pa {
             opt("pressure", arg(p));
         }
-        if let Some(h) = w.get("altitude_m") {
+        if let Some(h) = w.altitude_m {
             opt("altitude", arg(h));
         }
     } else {
-        opt("air-density", arg(&s["air_density_kgm3"]));
+        opt(
+            "air-density",
+            arg(s.air_density_kgm3.expect("a density or weather")),
+        );
     }
-    let wind = &s["wind_mps"];
-    if let Some(p) = s.get("wind_profile") {
-        opt("wind", arg3(wind));
-        opt("wind-reference-height", arg(&p["reference_height_m"]));
-        opt("wind-exponent", arg(&p["exponent"]));
-    } else if (0..3).any(|k| num(&wind[k]) != 0.0) {
-        opt("wind", arg3(wind));
+    if let Some(p) = s.wind_profile {
+        opt("wind", arg3(s.wind_mps));
+        opt("wind-reference-height", arg(p.reference_height_m));
+        opt("wind-exponent", arg(p.exponent));
+    } else if s.wind_mps.iter().any(|&w| w != 0.0) {
+        opt("wind", arg3(s.wind_mps));
     }
-    let fx = &s["effects"];
-    for (key, flag) in [
-        ("drag", "--no-drag"),
-        ("lift", "--no-lift"),
-        ("spin_decay", "--no-spin-decay"),
+    for (on, flag) in [
+        (s.effects.drag, "--no-drag"),
+        (s.effects.lift, "--no-lift"),
+        (s.effects.spin_decay, "--no-spin-decay"),
     ] {
-        if fx[key] == Value::Bool(false) {
+        if !on {
             a.push(flag.into());
         }
     }
     a
 }
 
-fn check_flight(name: &str, f: &Value, e: &Value) {
-    let c = |k: &str, got: &str, tol: f64| {
-        close(&format!("{name}: {k}"), num(&f[got]), num(&e[k]), tol)
-    };
-    c("carry_m", "carry_m", 1e-3);
-    c("carry_x_m", "carry_x_m", 1e-3);
-    c("side_m", "side_m", 1e-3);
-    c("apex_m", "apex_m", 1e-3);
+fn check_flight(name: &str, f: &Value, e: &FlightExpected) {
+    let c = |k: &str, want: f64, tol: f64| close(&format!("{name}: {k}"), num(&f[k]), want, tol);
+    c("carry_m", e.carry_m, 1e-3);
+    c("carry_x_m", e.carry_x_m, 1e-3);
+    c("side_m", e.side_m, 1e-3);
+    c("apex_m", e.apex_m, 1e-3);
     // The core's default fidelity pins carry to 1 mm; the rest follow within these.
-    c("flight_time_s", "flight_time_s", 1e-3);
-    c("apex_time_s", "apex_time_s", 2e-2);
-    c("land_angle_deg", "land_angle_deg", 1e-2);
-    c("land_speed_mps", "land_speed_mps", 1e-2);
-    c("land_spin_rpm", "land_spin_rpm", 0.5);
-    c("air_density_kgm3", "air_density_kgm3", 1e-9);
+    c("flight_time_s", e.flight_time_s, 1e-3);
+    c("apex_time_s", e.apex_time_s, 2e-2);
+    c("land_angle_deg", e.land_angle_deg, 1e-2);
+    c("land_speed_mps", e.land_speed_mps, 1e-2);
+    c("land_spin_rpm", e.land_spin_rpm, 0.5);
+    c("air_density_kgm3", e.air_density_kgm3, 1e-9);
     assert!(
         f["force_evaluations"].as_u64().is_some_and(|n| n > 0),
         "{name}: force_evaluations"
     );
     let p = &f["landing_position_m"];
-    close(
-        &format!("{name}: landing x"),
-        num(&p[0]),
-        num(&e["carry_x_m"]),
-        1e-3,
-    );
-    close(
-        &format!("{name}: landing z"),
-        num(&p[2]),
-        num(&e["side_m"]),
-        1e-3,
-    );
+    close(&format!("{name}: landing x"), num(&p[0]), e.carry_x_m, 1e-3);
+    close(&format!("{name}: landing z"), num(&p[2]), e.side_m, 1e-3);
 }
 
 #[test]
 fn flight_golden_cases_match_within_a_millimetre() {
-    let root = golden("flight.json");
-    let cases = root["cases"].as_array().expect("cases");
+    let cases = carry_golden::flight_cases().expect("flight.json");
     assert!(cases.len() >= 10);
-    for case in cases {
-        let name = case["name"].as_str().expect("name");
+    for case in &cases {
+        let name = &case.name;
         let args = flight_args(case);
         let args: Vec<&str> = args.iter().map(String::as_str).collect();
         let r = run(&args);
-        if case.get("expected_error").and_then(Value::as_str).is_some() {
-            assert_eq!(r.code, 2, "{name}: {}", r.stderr);
-            assert_eq!(r.stderr.lines().count(), 1, "{name}: {}", r.stderr);
-            continue;
-        }
         assert_eq!(r.code, 0, "{name} {args:?}: {}", r.stderr);
         let out: Value = serde_json::from_str(&r.stdout).expect("JSON");
-        check_flight(name, &out["flight"], &case["expected"]);
+        check_flight(name, &out["flight"], &case.expected);
         close(
             &format!("{name}: launch ball speed"),
             num(&out["launch"]["ball_speed_mps"]),
-            num(&case["launch"]["ball_speed_mps"]),
+            case.launch.ball_speed_mps,
             1e-12,
         );
     }
@@ -364,12 +318,12 @@ fn shot_is_the_union_of_impact_and_flight_and_matches_the_reference() {
     assert_eq!(shot["launch"], impact["launch"]);
     assert_eq!(shot["club_after"], impact["club_after"]);
     assert_eq!(shot["impulse_ns"], impact["impulse_ns"]);
-    let root = golden("flight.json");
-    let reference = root["cases"]
-        .as_array()
-        .and_then(|c| c.iter().find(|c| c["name"] == "reference_driver_impact"))
+    let reference = carry_golden::flight_cases()
+        .expect("flight.json")
+        .into_iter()
+        .find(|c| c.name == "reference_driver_impact")
         .expect("reference case");
-    check_flight("shot", &shot["flight"], &reference["expected"]);
+    check_flight("shot", &shot["flight"], &reference.expected);
     // The contract's keys, by name.
     for key in [
         "ball_speed_mps",

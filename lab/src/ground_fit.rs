@@ -29,6 +29,10 @@ pub const MPH_MPS: f64 = 0.447_04;
 pub struct ChartRow {
     /// Club speed (mph) and attack angle (deg), as a label.
     pub label: String,
+    /// The chart's club speed (mph).
+    pub club_speed_mph: f64,
+    /// The chart's attack angle (deg).
+    pub attack_deg: f64,
     /// The launch.
     pub launch: Launch<f64>,
     /// The chart's carry (yd).
@@ -98,6 +102,8 @@ pub fn parse_chart(text: &str) -> Result<Vec<ChartRow>, String> {
             };
             Ok(ChartRow {
                 label: format!("{} mph, {:+} deg", x(club)?, x(attack)?),
+                club_speed_mph: x(club)?,
+                attack_deg: x(attack)?,
                 launch: Launch {
                     ball_speed_mps: x(bs)? * MPH_MPS,
                     launch_angle_rad: deg(x(la)?),

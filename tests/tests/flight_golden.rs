@@ -28,7 +28,7 @@ fn worst<T: Real>(integrator: &Integrator<T>) -> (f64, u64) {
 fn worst_of<T: Real>(integrator: &Integrator<T>, pick: impl Fn(&FlightCase) -> bool) -> (f64, u64) {
     let mut worst = 0.0_f64;
     let mut evals = 0_u64;
-    for case in load().cases.into_iter().filter(|c| pick(c)) {
+    for case in load().into_iter().filter(|c| pick(c)) {
         let out = run(&case, integrator).unwrap_or_else(|e| panic!("{}: {e}", case.name));
         let e = &case.expected;
         for d in [
@@ -48,7 +48,7 @@ fn worst_of<T: Real>(integrator: &Integrator<T>, pick: impl Fn(&FlightCase) -> b
 #[test]
 #[ignore = "prints the tuning table"]
 fn sweep() {
-    let n = load().cases.len() as f64;
+    let n = load().len() as f64;
     let prof = |c: &FlightCase| c.scene.wind_profile.is_some();
     for tol in [
         1e-3, 7e-4, 5e-4, 4e-4, 3e-4, 2e-4, 1e-4, 7e-5, 5e-5, 4e-5, 3e-5, 1e-5, 1e-6, 1e-7,
@@ -165,7 +165,7 @@ const F32_DEFAULT: Tol = Tol {
 };
 
 fn check<T: Real>(integrator: &Integrator<T>, tol: &Tol) {
-    for case in load().cases {
+    for case in load() {
         let out = run(&case, integrator).unwrap_or_else(|e| panic!("{}: {e}", case.name));
         let e = &case.expected;
         let checks = [
@@ -241,7 +241,7 @@ fn golden_f32_default_fidelity() {
 #[ignore = "prints per-case errors"]
 fn per_case() {
     for tol in [1e-4, 1e-6] {
-        for case in load().cases {
+        for case in load() {
             let e = &case.expected;
             let o = run::<f64>(&case, &Integrator::dormand_prince(tol));
             let o32 = run::<f32>(&case, &Integrator::dormand_prince(tol as f32));
@@ -269,7 +269,6 @@ fn per_case() {
 #[ignore = "profile experiments"]
 fn profile_experiment() {
     let case = load()
-        .cases
         .into_iter()
         .find(|c| c.name.contains("profile"))
         .unwrap();
@@ -303,7 +302,7 @@ fn profile_experiment() {
 #[test]
 #[ignore = "prints tight f64 errors"]
 fn tight_per_case() {
-    for case in load().cases {
+    for case in load() {
         let e = &case.expected;
         let o = run::<f64>(&case, &Integrator::tight()).unwrap();
         println!(
@@ -387,7 +386,7 @@ fn ladder_counts() {
 fn max_deviations() {
     fn show<T: Real>(label: &str, integrator: &Integrator<T>) {
         let mut m = [0.0_f64; 6];
-        for case in load().cases {
+        for case in load() {
             let o = run(&case, integrator).unwrap();
             let e = &case.expected;
             let d = [

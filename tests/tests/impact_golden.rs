@@ -52,9 +52,9 @@ const F32: Tolerances = Tolerances {
 const SOLVERS: [Solver; 2] = [Solver::Reduced, Solver::Full(Pivoting::Equilibrated)];
 
 fn run<T: Real>(case: &ImpactCase, solver: Solver) -> Result<ImpactOutcome<T>> {
-    let club = case.club::<T>().validate()?;
-    let ball = case.ball::<T>()?;
-    let strike = case.delivery::<T>().strike(&club)?;
+    let club = case.club_spec::<T>().validate()?;
+    let ball = case.ball.to_ball::<T>()?;
+    let strike = case.delivery.to_delivery::<T>().strike(&club)?;
     impact::solve(&club, &ball, &strike, solver)
 }
 
@@ -175,7 +175,7 @@ fn golden_set<T: Real>(tol: Tolerances, label: &str) {
         let mut checked = 0;
         for case in &cases {
             let got = run::<T>(case, solver);
-            match (case.expected(), case.expected_error()) {
+            match (case.expected, case.expected_error.as_deref()) {
                 (Some(e), _) => {
                     let out = got.unwrap_or_else(|err| panic!("{}: {err}", case.name));
                     compare(&out, &e, tol, &case.name, &mut worst);

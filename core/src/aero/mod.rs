@@ -26,11 +26,14 @@
 //! only the magnitude `s` is integrated: the state is position, velocity and `s`
 //! (7 numbers), and the spin vector at any time is `s · ω̂`.
 
+mod field;
 mod linear;
 pub(crate) mod model;
 mod modern;
 mod saturation;
 
+pub use field::Effects;
+pub(crate) use field::ForceField;
 pub use linear::{
     CD_SP, CD0, CL_SP, CL0, CM_SP, LINEAR_NAMES, LinearAero, MAX_LINEAR_COEFFICIENT,
     drag_coefficient, lift_coefficient, moment_coefficient,
@@ -40,7 +43,6 @@ pub use model::{AeroModel, BUILT_IN_MODELS};
 pub use modern::{MODERN_COEFFICIENTS, MODERN_NAMES, ModernAero, TOUR_2023};
 
 use crate::real::{Real, lit};
-use crate::scene::PreparedScene;
 use nalgebra::Vector3;
 
 /// The integrated state: position (m) 0..3, velocity (m/s) 3..6, spin magnitude (rad/s) 6.
@@ -76,14 +78,15 @@ pub(crate) trait Rhs<T: Real> {
     fn step_is_bounded(&self, y0: &State<T>, y1: &State<T>, h: T) -> bool;
 }
 
-/// The flight dynamics of one shot: a prepared scene and the (constant) spin axis.
+/// The flight dynamics of one shot: a prepared scene's force field and the (constant)
+/// spin axis.
 ///
 /// Disabled effects are skipped by branches on the scene's flags: they are constant for
 /// the whole flight, so the branches are perfectly predicted (measured in docs/flight.md
 /// against compile-time flags, [`Switches`]).
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Dynamics<'a, T: Real> {
-    pub(crate) scene: &'a PreparedScene<T>,
+    pub(crate) field: &'a ForceField<T>,
     /// ω̂, or the zero vector when ω = 0 (no lift).
     pub(crate) axis: Vector3<T>,
 }
@@ -132,7 +135,7 @@ impl<T: Real> Dynamics<'_, T> {
         decay: bool,
         wind: bool,
     ) -> ForceEvaluation<T> {
-        let p = self.scene;
+        let p = self.field;
         let v = Vector3::new(y[3], y[4], y[5]);
         let s = y[S];
         let zero = T::zero();
@@ -190,8 +193,8 @@ impl<T: Real> Dynamics<'_, T> {
     /// bare-metal targets (size).
     #[cfg_attr(not(target_os = "none"), inline(always))]
     pub(crate) fn forces(&self, y: &State<T>) -> ForceEvaluation<T> {
-        let e = &self.scene.effects;
-        self.forces_switched(y, e.drag, e.lift, e.spin_decay, self.scene.has_wind())
+        let e = &self.field.effects;
+        self.forces_switched(y, e.drag, e.lift, e.spin_decay, self.field.has_wind())
     }
 
     /// The rates of change of the acceleration and of the spin rate over a short hop
@@ -228,10 +231,10 @@ impl<T: Real> Dynamics<'_, T> {
     /// The rates with the speed changing at the relative rate `V̇/V` (1/s).
     #[inline(always)]
     fn rates_along(&self, f: &ForceEvaluation<T>, relative_speed_rate: T) -> (Vector3<T>, T) {
-        let e = &self.scene.effects;
+        let e = &self.field.effects;
         let a = f.acceleration;
         let (dkd, dkl) = if e.drag || e.lift {
-            self.scene.aero.forces.factor_rates(
+            self.field.aero.forces.factor_rates(
                 f.speed,
                 f.speed_sq,
                 f.spin,
@@ -253,22 +256,22 @@ impl<T: Real> Dynamics<'_, T> {
 
 impl<T: Real> Rhs<T> for Dynamics<'_, T> {
     // Inlined on hosts (speed); one out-of-line copy on bare-metal targets, where the
-    // integrator's seven call sites would otherwise each carry the whole force model
-    // (−12.9 KB on the M4F; the call costs ~40 instructions of ~380 per evaluation).
+    // integrator's seven call sites would otherwise each carry the whole force model: the
+    // flash saved is worth far more there than the call (docs/firmware.md measures both).
     #[cfg_attr(not(target_os = "none"), inline(always))]
     #[cfg_attr(target_os = "none", inline(never))]
     fn eval(&self, y: &State<T>) -> State<T> {
-        let e = &self.scene.effects;
-        let wind = self.scene.has_wind();
+        let e = &self.field.effects;
+        let wind = self.field.has_wind();
         self.eval_switched(y, e.drag, e.lift, e.spin_decay, wind)
     }
 
     fn step_is_bounded(&self, y0: &State<T>, y1: &State<T>, h: T) -> bool {
-        let wind = &self.scene.wind;
+        let wind = &self.field.wind;
         let (w0, w1) = (wind.at(y0[Y]), wind.at(y1[Y]));
         let air_sq =
             |y: &State<T>, w: &Vector3<T>| (Vector3::new(y[3], y[4], y[5]) - w).norm_squared();
-        let gh = self.scene.gravity * h;
+        let gh = self.field.gravity * h;
         let growth_sq =
             lit::<T>(2.0) * air_sq(y0, &w0) + lit::<T>(4.0) * (gh * gh + (w1 - w0).norm_squared());
         air_sq(y1, &w1) <= lit::<T>(1.265_625) * growth_sq && y1[S].abs() <= y0[S] * lit(1.125)
@@ -318,7 +321,10 @@ mod tests {
             panic!()
         };
         for axis in [Vector3::zeros(), Vector3::z()] {
-            let d = Dynamics { scene: &p, axis };
+            let d = Dynamics {
+                field: &p.field,
+                axis,
+            };
             let f = d.eval(&[
                 0.0,
                 3.0,
@@ -353,7 +359,10 @@ mod tests {
                 (Vector3::new(15.0, -9.0, 3.0), 400.0),
                 (Vector3::new(30.0, 1.0, 0.0), 0.0),
             ] {
-                let d = Dynamics { scene: &p, axis };
+                let d = Dynamics {
+                    field: &p.field,
+                    axis,
+                };
                 let f = d.eval(&[0.0, 0.0, 0.0, v.x, v.y, v.z, s]);
                 let big_v = v.norm();
                 let sp = s * ball.radius_m() / big_v;

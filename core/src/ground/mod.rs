@@ -15,15 +15,20 @@
 //!
 //! Nothing of this runs, or costs anything, when the scene has no ground.
 
+mod aimed;
 pub mod bounce;
+mod hop;
 pub mod roll;
 pub mod surface;
 
-use crate::aero::ForceEvaluation;
 use crate::error::{Error, Field, Reason, Result};
-use crate::flight::{Recorder, Stats};
-use crate::real::{Real, larger, lit};
+use crate::real::{Real, lit};
+use crate::trajectory::{Contact, Plane, Recorder, Stats};
 use crate::validate::finite_vector;
+#[cfg(test)]
+use hop::hop_landing;
+pub use hop::{HOP_MAX_FIRST_STEP_S, HOP_STEP_FACTOR, HOP_TOLERANCE_FACTOR};
+pub(crate) use hop::{HopForces, Hopper, Hops, low_hop};
 use nalgebra::Vector3;
 pub use surface::{Surface, Turf};
 
@@ -38,7 +43,7 @@ pub const MAX_BOUNCES: u32 = 64;
 /// measures what this changes (centimetres over a run-out).
 pub const LOW_HOP_HEIGHT_M: f64 = 1.0;
 /// Steepest accepted ground (rad): 45°.
-pub const MAX_SLOPE_RAD: f64 = core::f64::consts::FRAC_PI_4;
+pub use crate::units::MAX_SLOPE_RAD;
 
 /// The ground after the landing: a surface and the plane's orientation.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -172,233 +177,6 @@ pub struct Rollout<T: Real> {
     pub stats: Stats,
 }
 
-/// The state at a ground contact.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) struct Contact<T: Real> {
-    pub(crate) time: T,
-    pub(crate) position: Vector3<T>,
-    pub(crate) velocity: Vector3<T>,
-    pub(crate) spin: Vector3<T>,
-}
-
-/// Flies a hop from a contact: returns the next contact (through the flight's integrator
-/// and force model; see `flight::hop`).
-pub(crate) trait Hopper<T: Real> {
-    fn hop(
-        &self,
-        from: &Contact<T>,
-        plane: crate::flight::Plane<T>,
-        recorder: Option<&mut Recorder<'_, T>>,
-        stats: &mut Stats,
-    ) -> Result<Contact<T>>;
-
-    /// The acceleration (m/s², G, gravity included), the rate of change of the spin
-    /// magnitude (rad/s²) and the coefficients behind them, of a ball at `position` with
-    /// `velocity`, spinning at `spin` (rad/s) about the unit `axis` (zero without spin):
-    /// one force evaluation.
-    fn forces(
-        &self,
-        position: &Vector3<T>,
-        velocity: &Vector3<T>,
-        spin: T,
-        axis: &Vector3<T>,
-        stats: &mut Stats,
-    ) -> ForceEvaluation<T>;
-
-    /// The rates of change of the acceleration and of the spin rate over a short hop from
-    /// the evaluation `forces` of a ball spinning about `axis` (`aero::Dynamics::rates_held`).
-    fn rates_held(&self, forces: &ForceEvaluation<T>, axis: &Vector3<T>) -> (Vector3<T>, T);
-
-    /// Whether the forces see a wind that changes with height (a profile).
-    fn wind_varies(&self) -> bool;
-}
-
-/// How a low hop's closed form takes the scene's forces (see [`low_hop`]).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(crate) enum HopForces {
-    /// Still air or a uniform wind: one evaluation at the bounce and its rate over the hop.
-    Held,
-    /// A wind profile: three evaluations, at the bounce, at the predicted landing and in
-    /// the middle of the hop.
-    ThreePoints,
-}
-
-impl HopForces {
-    /// The form for a scene whose wind does (a profile) or does not vary with height.
-    pub(crate) fn for_wind(varies_with_height: bool) -> Self {
-        if varies_with_height {
-            Self::ThreePoints
-        } else {
-            Self::Held
-        }
-    }
-}
-
-/// A low hop in closed form: the acceleration and the spin's rate of change linear (or
-/// quadratic) in time,
-///
-/// ```text
-/// p(τ) = p₀ + v₀τ + a₀τ²/2 + jτ³/6,   v(τ) = v₀ + a₀τ + jτ²/2
-/// ```
-///
-/// landing where `n̂·(p − p₀) = 0`, a quadratic in `τ` (solved exactly). The rate `j`
-/// ([`HopForces`]):
-/// - `Held`: from the one evaluation at the bounce (`aero::Dynamics::rates_held`): the
-///   force's change with the velocity, and its factors' change as the drag slows the ball
-///   and the spin decays. Gravity's share of the speed's change is left out: the speed
-///   dips towards the apex and is back at the landing. Against the same hops integrated
-///   it is as close as a second evaluation at the landing (unit test
-///   `flight::tests::closed_form_hop_matches_the_integrated_hop`; docs/ground.md);
-/// - `ThreePoints`: in a wind profile the air velocity changes with height (zero at the
-///   ground, where both ends are), so the forces are evaluated at the bounce, at the
-///   landing predicted with `a₀` (`j = (a₁ − a₀)/τ₁`) and in the middle of that hop, and
-///   the acceleration is quadratic in time through the three.
-///
-/// `None` when the force does not pull the ball back to the plane.
-pub(crate) fn low_hop<T: Real, H: Hopper<T>>(
-    from: &Contact<T>,
-    n: &Vector3<T>,
-    hopper: &H,
-    form: HopForces,
-    stats: &mut Stats,
-    recorder: Option<&mut Recorder<'_, T>>,
-) -> Option<Contact<T>> {
-    // The spin axis is fixed in flight: its magnitude and direction once (each `norm` is a
-    // software square root on a Cortex-M4F).
-    let spin0 = from.spin.norm();
-    let axis = if spin0 > T::zero() {
-        from.spin / spin0
-    } else {
-        Vector3::zeros()
-    };
-    let f0 = hopper.forces(&from.position, &from.velocity, spin0, &axis, stats);
-    let (a0, s0) = (f0.acceleration, f0.spin_rate);
-    let vn = from.velocity.dot(n);
-    let two = lit::<T>(2.0);
-    // First guess: the parabola of the initial force.
-    let an = a0.dot(n);
-    if !(an < T::zero()) {
-        return None;
-    }
-    let half = lit::<T>(0.5);
-    let sixth = lit::<T>(1.0 / 6.0);
-    // The spin magnitude, its rate linear in time (never below zero).
-    let spin_at = |tau: T, rate0: T, jerk: T| {
-        larger(spin0 + rate0 * tau + jerk * tau * tau * half, T::zero())
-    };
-    let state = |tau: T, j: &Vector3<T>| {
-        (
-            from.position
-                + from.velocity * tau
-                + a0 * (half * tau * tau)
-                + j * (sixth * tau * tau * tau),
-            from.velocity + a0 * tau + j * (half * tau * tau),
-        )
-    };
-    // With `a(τ) = a₀ + jτ + qτ²` (q only in a wind profile, see below).
-    let state_q = |tau: T, j: &Vector3<T>, q: Option<&Vector3<T>>| {
-        let (p, v) = state(tau, j);
-        match q {
-            Some(q) => {
-                let tau2 = tau * tau;
-                (
-                    p + q * (lit::<T>(1.0 / 12.0) * tau2 * tau2),
-                    v + q * (lit::<T>(1.0 / 3.0) * tau2 * tau),
-                )
-            }
-            None => (p, v),
-        }
-    };
-    let (j, spin_jerk, q, tau) = if form == HopForces::Held {
-        let (j, spin_jerk) = hopper.rates_held(&f0, &axis);
-        (j, spin_jerk, None, hop_landing(vn, an, j.dot(n))?)
-    } else {
-        // τ₁ and 1/τ₁ side by side (two divisions, neither waiting on the other).
-        let t1 = -two * vn / an;
-        let per_t1 = -an / (two * vn);
-        let zero = Vector3::zeros();
-        let (p1, v1) = state(t1, &zero);
-        let f1 = hopper.forces(&p1, &v1, spin_at(t1, s0, T::zero()), &axis, stats);
-        let a1 = f1.acceleration;
-        let (j, spin_jerk) = ((a1 - a0) * per_t1, (f1.spin_rate - s0) * per_t1);
-        // jn = j·n from the normal accelerations (one dot product after a₁, not two steps).
-        let tau = hop_landing(vn, an, (a1.dot(n) - an) * per_t1)?;
-        // Through the three, `j = (4a_m − 3a₀ − a₁)/τ₁`, `q = 2(a₀ + a₁ − 2a_m)/τ₁²`; the
-        // landing by Newton's method from the two-end root on
-        // `vn + a_nτ/2 + j_nτ²/6 + q_nτ³/12 = 0`.
-        let tm = t1 * half;
-        let (pm, vm) = state(tm, &j);
-        let am = hopper
-            .forces(&pm, &vm, spin_at(tm, s0, spin_jerk), &axis, stats)
-            .acceleration;
-        let j = (am * lit::<T>(4.0) - a0 * lit::<T>(3.0) - a1) * per_t1;
-        let q = (a0 + a1 - am * two) * (two * per_t1 * per_t1);
-        let (jn, qn) = (j.dot(n), q.dot(n));
-        let mut tau = tau;
-        for _ in 0..3 {
-            let g = vn + tau * (an * half + tau * (jn * sixth + tau * qn * lit(1.0 / 12.0)));
-            let dg = an * half + tau * (jn * lit(1.0 / 3.0) + tau * qn * lit(0.25));
-            if dg < T::zero() {
-                tau -= g / dg;
-            }
-        }
-        if !(tau > T::zero() && tau.is_finite()) {
-            return None;
-        }
-        (j, spin_jerk, Some(q), tau)
-    };
-    if let Some(r) = recorder {
-        r.record_hop(from.time, tau, &axis, |t| {
-            let (p, v) = state_q(t, &j, q.as_ref());
-            (p, v, spin_at(t, s0, spin_jerk))
-        });
-    }
-    // (The plain closure when there is no q: the `Option` in the landing's state cost ~25
-    // instructions a shot on the M4F.)
-    let (position, velocity) = match q {
-        Some(q) => state_q(tau, &j, Some(&q)),
-        None => state(tau, &j),
-    };
-    Some(Contact {
-        time: from.time + tau,
-        position,
-        velocity,
-        spin: axis * spin_at(tau, s0, spin_jerk),
-    })
-}
-
-/// The landing time `τ > 0` of a hop leaving the plane at normal speed `vn > 0` with normal
-/// acceleration `an < 0` and normal jerk `jn`: the root of `vn + an τ/2 + jn τ²/6 = 0` that
-/// continues the parabola's `τ₀ = −2vn/an`; `None` when there is none.
-///
-/// With `τ = τ₀·y` and `x = −jn·τ₀/(3an)`, `y = 1 + x y²`, so `y = Σ Cₖ xᵏ` (Catalan
-/// numbers 1, 1, 2, 5, 14, 42, …). For `|x| ≤ 1/32` (a low hop's `x` is about 0.01) the
-/// series to `x⁵` (truncation `132x⁶ < 1.3·10⁻⁷` relative): `τ₀` and the scale of `x` need
-/// only `an` and run beside the jerk's computation, and after `jn` it is a few
-/// multiply–adds where the closed form `2vn/(√(an²/4 − 2jn·vn/3) − an/2)` (used otherwise)
-/// waits on a square root and a division.
-#[inline]
-pub(crate) fn hop_landing<T: Real>(vn: T, an: T, jn: T) -> Option<T> {
-    let two = lit::<T>(2.0);
-    let per_an = T::one() / an;
-    let tau0 = -two * vn * per_an;
-    let x = jn * (tau0 * per_an * lit::<T>(-1.0 / 3.0));
-    if x.abs() <= lit::<T>(1.0 / 32.0) && tau0 > T::zero() && tau0.is_finite() {
-        let x2 = x * x;
-        let low = T::one() + x + x2 * (two + lit::<T>(5.0) * x);
-        let high = lit::<T>(14.0) + lit::<T>(42.0) * x;
-        return Some(tau0 * (low + (x2 * x2) * high));
-    }
-    // The stable form 2c/(−b + √(b² − 4ac)), a = jn/6, b = an/2 < 0, c = vn > 0.
-    let b = an * lit::<T>(0.5);
-    let disc = b * b - jn * (lit::<T>(2.0 / 3.0) * vn);
-    if !(disc >= T::zero()) {
-        return None;
-    }
-    let tau = two * vn / (disc.sqrt() - b);
-    (tau > T::zero() && tau.is_finite()).then_some(tau)
-}
-
 /// Bounces and rolls from the first landing `first` to rest.
 pub(crate) fn run_out<T: Real, H: Hopper<T>>(
     ground: &PreparedGround<T>,
@@ -410,7 +188,7 @@ pub(crate) fn run_out<T: Real, H: Hopper<T>>(
 ) -> Result<Rollout<T>> {
     let mut recorder = recorder;
     let n = ground.normal;
-    let plane = crate::flight::Plane {
+    let plane = Plane {
         normal: n,
         offset: n.dot(&first.position),
     };

@@ -27,8 +27,8 @@
 //! slope's pull is below the resistance at rest, `|g⃗_t| ≤ ρ₀ g_n`; on a steeper slope it
 //! rolls on until [`ROLL_TIME_CAP_S`].
 
-use crate::flight::{Recorder, Sample};
 use crate::real::{Real, larger, lit, smaller, to_f64};
+use crate::trajectory::{Recorder, Sample};
 use nalgebra::Vector3;
 
 /// The longest roll simulated (s): a ball still rolling then ends as

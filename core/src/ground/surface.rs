@@ -22,11 +22,11 @@ use crate::validate::{in_range, positive};
 /// Speed at which the stimpmeter releases the ball (m/s).
 pub const STIMPMETER_SPEED_MPS: f64 = 1.83;
 /// One foot (m): stimp readings are quoted in feet.
-pub const FOOT_M: f64 = 0.3048;
+pub use crate::units::M_PER_FOOT as FOOT_M;
 /// Default green speed: stimp 10 ft (a fast club green; tour greens run 11–13).
 pub const DEFAULT_STIMP_M: f64 = 10.0 * FOOT_M;
 /// Accepted stimp readings (m): 1 ft to 30 ft.
-pub const STIMP_RANGE_M: (f64, f64) = (FOOT_M, 30.0 * FOOT_M);
+pub use crate::units::STIMP_RANGE_M;
 /// Penner's restitution at vanishing normal speed (2002, eq. 5).
 pub const PENNER_RESTITUTION_0: f64 = 0.510;
 /// Penner's ball–turf friction coefficient (2002).
@@ -86,7 +86,7 @@ fn resistance_from_stimp<T: Real>(stimp_m: T) -> T {
     let v0 = STIMPMETER_SPEED_MPS;
     let c = GRASS_DRAG_S2PM2;
     let reach = lit::<T>(c * v0 * v0).ln_1p();
-    reach / (lit::<T>(2.0 * 5.0 / 7.0 * crate::scene::STANDARD_GRAVITY_MPS2 * c) * stimp_m)
+    reach / (lit::<T>(2.0 * 5.0 / 7.0 * crate::units::STANDARD_GRAVITY_MPS2 * c) * stimp_m)
 }
 
 impl<T: Real> Surface<T> {

@@ -23,7 +23,7 @@
 //! element impact models", Sports Engineering 12 (2009); the impulse–momentum model of
 //! their three-dimensional club–ball impact.
 
-pub mod contact_law;
+pub use crate::contact_law;
 pub mod full;
 pub mod reduced;
 

@@ -2,10 +2,12 @@
 //! turned into the C API's input structs, and the C API's results flattened in the order
 //! of `cases.rs` (so that they compare with the core's, bit for bit). Shared by the Rust
 //! tests and the C firmware's generator (`examples/golden_c.rs`); both include
-//! `firmware/src/cases.rs` as `crate::cases`.
+//! `firmware/src/cases.rs` as `crate::cases` and `firmware/src/golden_input.rs` (the cases
+//! read by `carry-golden`, the one golden-file reader) as `crate::golden_input`.
 #![allow(dead_code)]
 
 use crate::cases::{FLIGHT_OUTPUTS, FlightInput, IMPACT_OUTPUTS, ImpactInput};
+use carry_core::convention::DeliveryConvention;
 use carry_core::impact::Solver;
 use carry_core::presets::FITTED_CONTACT;
 use carry_core::real::{Real, lit};
@@ -18,8 +20,6 @@ use carry_ffi::{
     CarryBall, CarryDelivery, CarryFlightInput, CarryFlightResult, CarryImpactInput,
     CarryImpactResult,
 };
-use serde_json::Value;
-use std::path::Path;
 
 /// A named impact case.
 pub struct ImpactCase {
@@ -33,112 +33,26 @@ pub struct FlightCase {
     pub input: FlightInput,
 }
 
-fn read_json(path: &Path) -> Value {
-    let text = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-    let quoted = text
-        .replace("-Infinity", "\"-inf\"")
-        .replace("Infinity", "\"inf\"")
-        .replace("NaN", "\"nan\"");
-    serde_json::from_str(&quoted).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
-}
-
-fn num(v: &Value) -> f64 {
-    match v {
-        Value::Number(n) => n.as_f64().unwrap_or(f64::NAN),
-        Value::String(s) => s.parse().unwrap_or(f64::NAN),
-        other => panic!("not a number: {other}"),
-    }
-}
-
-fn opt(v: &Value, k: &str) -> Option<f64> {
-    v.get(k).filter(|x| !x.is_null()).map(num)
-}
-
-fn vec3(v: &Value) -> [f64; 3] {
-    [num(&v[0]), num(&v[1]), num(&v[2])]
-}
-
-/// The golden directory of the repository (`tests/golden`).
-pub fn dir() -> std::path::PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/golden")
-}
-
 /// Every impact case of `impact.json`.
 pub fn impact_cases() -> Vec<ImpactCase> {
-    let root = read_json(&dir().join("impact.json"));
-    let cases = root["cases"].as_array().cloned().unwrap_or_default();
-    cases
+    let golden = carry_golden::impact_cases().unwrap_or_else(|e| panic!("{e}"));
+    golden
         .iter()
-        .map(|c| {
-            let (club, ball, d) = (&c["club"], &c["ball"], &c["delivery"]);
-            let i = &club["inertia_kgm2"];
-            ImpactCase {
-                name: c["name"].as_str().unwrap_or("?").to_owned(),
-                input: ImpactInput {
-                    club_mass_kg: num(&club["mass_kg"]),
-                    inertia_kgm2: [vec3(&i[0]), vec3(&i[1]), vec3(&i[2])],
-                    loft_deg: num(&club["loft_deg"]),
-                    roll_radius_m: num(&club["roll_radius_m"]),
-                    bulge_radius_m: num(&club["bulge_radius_m"]),
-                    face_depth_radius_m: opt(club, "ellipsoid_a_m"),
-                    cg_to_face_m: vec3(&club["cg_to_face_m"]),
-                    ball_mass_kg: num(&ball["mass_kg"]),
-                    ball_radius_m: num(&ball["radius_m"]),
-                    club_speed_mps: num(&d["club_speed_mps"]),
-                    attack_angle_deg: num(&d["attack_angle_deg"]),
-                    club_path_deg: num(&d["club_path_deg"]),
-                    face_angle_deg: num(&d["face_angle_deg"]),
-                    dynamic_loft_deg: num(&d["dynamic_loft_deg"]),
-                    lie_deg: num(&d["lie_deg"]),
-                    club_spin_radps: vec3(&d["club_spin_radps"]),
-                    impact_height_m: num(&d["impact_height_m"]),
-                    impact_toe_m: num(&d["impact_toe_m"]),
-                    cor: num(&d["cor"]),
-                },
-            }
+        .map(|c| ImpactCase {
+            name: c.name.clone(),
+            input: crate::golden_input::impact_input(c),
         })
         .collect()
 }
 
 /// Every flight case of `flight.json`.
 pub fn flight_cases() -> Vec<FlightCase> {
-    let root = read_json(&dir().join("flight.json"));
-    let cases = root["cases"].as_array().cloned().unwrap_or_default();
-    cases
+    let golden = carry_golden::flight_cases().unwrap_or_else(|e| panic!("{e}"));
+    golden
         .iter()
-        .map(|c| {
-            let (l, s) = (&c["launch"], &c["scene"]);
-            let weather = s.get("weather").filter(|w| !w.is_null()).map(|w| {
-                (
-                    num(&w["temperature_c"]),
-                    num(&w["relative_humidity"]),
-                    opt(w, "pressure_pa"),
-                    opt(w, "altitude_m"),
-                )
-            });
-            let profile = s
-                .get("wind_profile")
-                .filter(|p| !p.is_null())
-                .map(|p| (num(&p["reference_height_m"]), num(&p["exponent"])));
-            let effect = |k: &str| s["effects"][k].as_bool().unwrap_or(true);
-            FlightCase {
-                name: c["name"].as_str().unwrap_or("?").to_owned(),
-                input: FlightInput {
-                    ball_speed_mps: num(&l["ball_speed_mps"]),
-                    launch_angle_deg: num(&l["launch_angle_deg"]),
-                    launch_direction_deg: num(&l["launch_direction_deg"]),
-                    backspin_rpm: num(&l["backspin_rpm"]),
-                    sidespin_rpm: num(&l["sidespin_rpm"]),
-                    landing_height_m: num(&s["landing_height_m"]),
-                    drag: effect("drag"),
-                    lift: effect("lift"),
-                    spin_decay: effect("spin_decay"),
-                    air_density_kgm3: opt(s, "air_density_kgm3"),
-                    weather,
-                    wind_mps: vec3(&s["wind_mps"]),
-                    wind_profile: profile,
-                },
-            }
+        .map(|c| FlightCase {
+            name: c.name.clone(),
+            input: crate::golden_input::flight_input(c),
         })
         .collect()
 }
@@ -170,18 +84,7 @@ pub fn impact_input<T: Real>(c: &ImpactInput, solver: u32, compliant: bool) -> C
             mass_kg: lit(c.ball_mass_kg),
             radius_m: lit(c.ball_radius_m),
         },
-        delivery: CarryDelivery {
-            club_speed_mps: d.club_speed_mps,
-            attack_angle_rad: d.attack_angle_rad,
-            club_path_rad: d.club_path_rad,
-            face_angle_rad: d.face_angle_rad,
-            dynamic_loft_rad: d.dynamic_loft_rad,
-            lie_rad: d.lie_rad,
-            club_spin_radps: d.club_spin_radps.into(),
-            impact_height_m: d.location.height_m,
-            impact_toe_m: d.location.toe_m,
-            convention: carry_ffi::impact::CARRY_CONVENTION_SEED_CENTRE,
-        },
+        delivery: CarryDelivery::from_delivery(&d, DeliveryConvention::SeedCentre),
         settings: CarrySettings {
             solver,
             ..CarrySettings::default()
@@ -334,13 +237,9 @@ pub fn flight_outputs<T: Real>(r: &CarryFlightResult<T>) -> [T; FLIGHT_OUTPUTS] 
 
 /// The golden files' f64 reference carry of each flight case: (name, carry in m).
 pub fn flight_reference() -> Vec<(String, f64)> {
-    let root = read_json(&dir().join("flight.json"));
-    let cases = root["cases"].as_array().cloned().unwrap_or_default();
-    cases
-        .iter()
-        .map(|c| {
-            let name = c["name"].as_str().unwrap_or("?").to_owned();
-            (name, num(&c["expected"]["carry_m"]))
-        })
+    let golden = carry_golden::flight_cases().unwrap_or_else(|e| panic!("{e}"));
+    golden
+        .into_iter()
+        .map(|c| (c.name, c.expected.carry_m))
         .collect()
 }

@@ -1,6 +1,7 @@
 //! The study's fixed, documented shot set (docs/accuracy.md lists it).
 //!
-//! Three parts, all embedded in the binary (the golden files are read at compile time):
+//! Three parts, all embedded in the binary (`carry-golden`, the one golden-file reader, embeds
+//! the golden files at compile time):
 //!
 //! * the 21 launches of `tests/golden/flight.json` with their scenes (driver to chip,
 //!   slice and hook axes, head-, tail- and crosswind, a wind profile, altitude and cold
@@ -21,10 +22,6 @@ use carry_core::{
     PreparedScene, Real, Scene, Wind,
 };
 use nalgebra::{Matrix3, Vector3};
-use serde_json::Value;
-
-const FLIGHT_JSON: &str = include_str!("../../../tests/golden/flight.json");
-const IMPACT_JSON: &str = include_str!("../../../tests/golden/impact.json");
 
 /// The scene of a shot, in `f64`.
 #[derive(Debug, Clone, Copy)]
@@ -315,31 +312,6 @@ impl Shot {
 
 // ------------------------------------------------------------------ golden files
 
-fn parse(text: &str) -> Result<Value, String> {
-    // Python's JSON writes bare NaN / Infinity tokens (in the error cases).
-    let quoted = text
-        .replace("-Infinity", "\"-inf\"")
-        .replace("Infinity", "\"inf\"")
-        .replace("NaN", "\"nan\"");
-    serde_json::from_str(&quoted).map_err(|e| format!("golden JSON: {e}"))
-}
-
-fn num(v: &Value) -> Result<f64, String> {
-    match v {
-        Value::Number(n) => n.as_f64().ok_or_else(|| "bad number".to_owned()),
-        Value::String(s) => s.parse().map_err(|_| format!("bad number {s}")),
-        other => Err(format!("not a number: {other}")),
-    }
-}
-
-fn field(v: &Value, key: &str) -> Result<f64, String> {
-    num(&v[key]).map_err(|e| format!("{key}: {e}"))
-}
-
-fn vec3(v: &Value) -> Result<Vector3<f64>, String> {
-    Ok(Vector3::new(num(&v[0])?, num(&v[1])?, num(&v[2])?))
-}
-
 fn class_of(name: &str) -> &'static str {
     if name.contains("chip") {
         "chip"
@@ -355,57 +327,19 @@ fn class_of(name: &str) -> &'static str {
 }
 
 fn golden_flights() -> Result<Vec<Shot>, String> {
-    let root = parse(FLIGHT_JSON)?;
-    let cases = root["cases"].as_array().ok_or("flight.json: no cases")?;
+    let cases = carry_golden::flight_cases().map_err(|e| e.to_string())?;
     let mut out = Vec::new();
     for c in cases {
-        let name = c["name"].as_str().ok_or("flight case without a name")?;
-        let l = &c["launch"];
-        let launch = Launch {
-            ball_speed_mps: field(l, "ball_speed_mps")?,
-            launch_angle_rad: deg(field(l, "launch_angle_deg")?),
-            launch_direction_rad: deg(field(l, "launch_direction_deg")?),
-            backspin_radps: rpm(field(l, "backspin_rpm")?),
-            sidespin_radps: rpm(field(l, "sidespin_rpm")?),
-        };
-        let s = &c["scene"];
-        let e = &s["effects"];
-        let flag = |k: &str| e[k].as_bool().unwrap_or(true);
-        let effects = Effects {
-            drag: flag("drag"),
-            lift: flag("lift"),
-            spin_decay: flag("spin_decay"),
-        };
-        let air = if let Some(w) = s.get("weather").filter(|w| !w.is_null()) {
-            let pressure = match (w.get("pressure_pa"), w.get("altitude_m")) {
-                (Some(p), _) if !p.is_null() => Pressure::Pa(num(p)?),
-                (_, Some(h)) if !h.is_null() => Pressure::Altitude(num(h)?),
-                _ => Pressure::Altitude(0.0),
-            };
-            Air::Weather(Weather {
-                temperature_c: field(w, "temperature_c")?,
-                relative_humidity: field(w, "relative_humidity")?,
-                pressure,
-            })
-        } else {
-            Air::Density(field(s, "air_density_kgm3")?)
-        };
-        let w = vec3(&s["wind_mps"])?;
-        let wind = match s.get("wind_profile").filter(|p| !p.is_null()) {
-            Some(p) => Wind::Profile {
-                reference_mps: w,
-                reference_height_m: field(p, "reference_height_m")?,
-                exponent: field(p, "exponent")?,
-            },
-            None if w == Vector3::zeros() => Wind::None,
-            None => Wind::Uniform(w),
-        };
-        let x = &c["expected"];
+        let launch = c.launch.to_launch::<f64>();
+        let air = c
+            .scene
+            .air()
+            .ok_or_else(|| format!("{}: the scene states no air", c.name))?;
+        let x = &c.expected;
         let speed = launch.ball_speed_mps;
         out.push(Shot {
-            name: name.to_owned(),
-            class: if class_of(name) != "other" {
-                class_of(name)
+            class: if class_of(&c.name) != "other" {
+                class_of(&c.name)
             } else if speed >= 60.0 {
                 "driver"
             } else if speed >= 40.0 && launch.launch_angle_rad < deg(45.0) {
@@ -419,86 +353,48 @@ fn golden_flights() -> Result<Vec<Shot>, String> {
             start: Start::Launch(launch),
             scene: SceneSpec {
                 aero: AeroModel::quintavalla(),
-                effects,
+                effects: c.scene.effects(),
                 air,
-                wind,
-                landing_height_m: field(s, "landing_height_m")?,
+                wind: c.scene.wind(),
+                landing_height_m: c.scene.landing_height_m,
             },
             golden: Some(Golden::Flight {
-                carry_m: field(x, "carry_m")?,
-                side_m: field(x, "side_m")?,
-                apex_m: field(x, "apex_m")?,
-                flight_time_s: field(x, "flight_time_s")?,
-                land_angle_deg: field(x, "land_angle_deg")?,
+                carry_m: x.carry_m,
+                side_m: x.side_m,
+                apex_m: x.apex_m,
+                flight_time_s: x.flight_time_s,
+                land_angle_deg: x.land_angle_deg,
             }),
+            name: c.name,
         });
     }
     Ok(out)
 }
 
 fn golden_impacts() -> Result<Vec<Shot>, String> {
-    let root = parse(IMPACT_JSON)?;
-    let cases = root["cases"].as_array().ok_or("impact.json: no cases")?;
+    let cases = carry_golden::impact_cases().map_err(|e| e.to_string())?;
     let mut out = Vec::new();
     for c in cases {
-        let name = c["name"].as_str().ok_or("impact case without a name")?;
-        let Some(x) = c
-            .get("expected")
-            .filter(|x| x.get("ball_speed_mps").is_some())
-        else {
+        let Some(x) = c.expected else {
             continue; // an error case
         };
-        let k = &c["club"];
-        let i = &k["inertia_kgm2"];
-        let mut inertia = Matrix3::zeros();
-        for r in 0..3 {
-            for q in 0..3 {
-                inertia[(r, q)] = num(&i[r][q])?;
-            }
-        }
-        let d = &c["delivery"];
-        let club = ClubSpec {
-            mass_kg: field(k, "mass_kg")?,
-            inertia_kgm2: inertia,
-            loft_rad: deg(field(k, "loft_deg")?),
-            roll_radius_m: field(k, "roll_radius_m")?,
-            bulge_radius_m: field(k, "bulge_radius_m")?,
-            face_depth_radius_m: k.get("ellipsoid_a_m").map(num).transpose()?,
-            cg_to_face_m: vec3(&k["cg_to_face_m"])?,
-            restitution: field(d, "cor")?,
-            contact: ContactLaw::Rolling,
-        };
-        let delivery = Delivery {
-            club_speed_mps: field(d, "club_speed_mps")?,
-            attack_angle_rad: deg(field(d, "attack_angle_deg")?),
-            club_path_rad: deg(field(d, "club_path_deg")?),
-            face_angle_rad: deg(field(d, "face_angle_deg")?),
-            dynamic_loft_rad: deg(field(d, "dynamic_loft_deg")?),
-            lie_rad: deg(field(d, "lie_deg")?),
-            club_spin_radps: vec3(&d["club_spin_radps"])?,
-            location: FaceLocation {
-                height_m: field(d, "impact_height_m")?,
-                toe_m: field(d, "impact_toe_m")?,
-            },
-        };
-        let b = &c["ball"];
         out.push(Shot {
-            name: name.to_owned(),
-            class: class_of(name),
+            class: class_of(&c.name),
             origin: Origin::GoldenImpact,
             start: Start::Delivery {
-                club,
-                delivery,
-                ball_mass_kg: field(b, "mass_kg")?,
-                ball_radius_m: field(b, "radius_m")?,
+                club: c.club_spec(),
+                delivery: c.delivery.to_delivery(),
+                ball_mass_kg: c.ball.mass_kg,
+                ball_radius_m: c.ball.radius_m,
             },
             scene: SceneSpec::default(),
             golden: Some(Golden::Impact {
-                ball_speed_mps: field(x, "ball_speed_mps")?,
-                launch_angle_deg: field(x, "launch_angle_deg")?,
-                spin_rpm: field(x, "spin_rpm")?,
-                spin_axis_deg: field(x, "spin_axis_deg")?,
+                ball_speed_mps: x.ball_speed_mps,
+                launch_angle_deg: x.launch_angle_deg,
+                spin_rpm: x.spin_rpm,
+                spin_axis_deg: x.spin_axis_deg,
             }),
+            name: c.name,
         });
     }
     Ok(out)

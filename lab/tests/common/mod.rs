@@ -70,43 +70,24 @@ pub fn tour_2023() -> Option<Vec<ShotRow>> {
         .collect()
 }
 
-/// The 30 rows of trackman_driver_optimizer_2010.csv (carry only), or `None` where
-/// ../shared is absent. Labelled by club speed and attack angle.
+/// The 30 rows of trackman_driver_optimizer_2010.csv (carry only; read by the lab's
+/// chart reader), or `None` where ../shared is absent. Labelled by club speed and attack angle.
 pub fn optimizer_2010() -> Option<Vec<ShotRow>> {
     let text = std::fs::read_to_string(shared_data("trackman_driver_optimizer_2010.csv")?).ok()?;
-    let mut lines = text.lines();
-    let header: Vec<&str> = lines.next()?.split(',').collect();
-    let col = |n: &str| header.iter().position(|h| *h == n);
-    let (club, attack, bs, la, spin, carry) = (
-        col("club_speed_mph")?,
-        col("attack_deg")?,
-        col("ball_speed_mph")?,
-        col("launch_deg")?,
-        col("spin_rpm")?,
-        col("carry_yd")?,
-    );
-    lines
-        .filter(|l| !l.trim().is_empty())
-        .map(|l| {
-            let f: Vec<&str> = l.split(',').collect();
-            let x = |i: usize| f.get(i)?.trim().parse::<f64>().ok();
-            Some(ShotRow {
-                label: format!("{} mph {:+}°", f.get(club)?, x(attack)?),
-                launch: Launch {
-                    ball_speed_mps: x(bs)? * MPH,
-                    launch_angle_rad: deg(x(la)?),
-                    launch_direction_rad: 0.0,
-                    backspin_radps: rpm(x(spin)?),
-                    sidespin_radps: 0.0,
-                },
+    let rows = carry_lab::ground_fit::parse_chart(&text).ok()?;
+    Some(
+        rows.into_iter()
+            .map(|r| ShotRow {
+                label: format!("{} mph {:+}°", r.club_speed_mph, r.attack_deg),
+                launch: r.launch,
                 air: fitting_air(),
-                carry_m: x(carry)? * YD,
+                carry_m: r.carry_yd * YD,
                 apex_m: None,
                 land_angle_deg: None,
                 flight_time_s: None,
                 side_m: None,
                 weight: 1.0,
             })
-        })
-        .collect()
+            .collect(),
+    )
 }

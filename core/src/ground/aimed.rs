@@ -14,16 +14,17 @@
 //! The parabola misses the landing by a few per cent of the hop (`|Δ|` a few tens of
 //! milliseconds for a driver's first hop; about 0.1 s of 1.6 s), where the dropped terms
 //! (`d²a/dt²`, the factors' spin term) move a driver's first hop by about a millimetre a
-//! second (unit test `flight::tests::aimed_hop_matches_the_integrated_hop`). The step keeps the integrator's error test; a step that
+//! second (unit test `ground::hop::tests::aimed_hop_matches_the_integrated_hop`). The step keeps the integrator's error test; a step that
 //! fails it, or a correction longer than [`AIMED_MAX_CORRECTION`] of the step, returns
 //! `None` and the caller integrates the hop with the event search instead.
 
-use super::events::{Plane, Step};
-use super::integrate::{Adaptive, Stages, dormand_prince_stages, error_weights, scaled_error};
-use super::{Recorder, Stats};
 use crate::aero::{Dynamics, S, State};
-use crate::ground::Contact;
+use crate::integrator::events::Step;
+use crate::integrator::integrate::{
+    Adaptive, Stages, dormand_prince_stages, error_weights, scaled_error,
+};
 use crate::real::{Real, larger, lit};
+use crate::trajectory::{Contact, Plane, Recorder, Stats};
 use nalgebra::Vector3;
 
 /// Largest landing correction `|Δ|` past or before the aimed step's end, as a fraction of

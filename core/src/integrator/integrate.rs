@@ -12,29 +12,7 @@ use super::events::{Landing, Step, Tracker};
 use crate::aero::{Rhs, State};
 use crate::error::{Error, Result};
 use crate::real::{Real, larger, lit, smaller};
-
-/// Work done by a flight: force evaluations and steps.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-#[cfg_attr(feature = "defmt", derive(defmt::Format))]
-pub struct Stats {
-    /// Evaluations of the force model (right-hand side), the deterministic cost measure.
-    pub force_evaluations: u32,
-    /// Accepted steps.
-    pub steps: u32,
-    /// Rejected steps (adaptive integrator only).
-    pub rejected_steps: u32,
-}
-
-impl Stats {
-    /// Adds another run's work (a hop's to the run-out's), saturating.
-    pub(crate) fn add(&mut self, other: &Stats) {
-        self.force_evaluations = self
-            .force_evaluations
-            .saturating_add(other.force_evaluations);
-        self.steps = self.steps.saturating_add(other.steps);
-        self.rejected_steps = self.rejected_steps.saturating_add(other.rejected_steps);
-    }
-}
+use crate::trajectory::Stats;
 
 /// `y + h Σ cⱼ kⱼ`, panic-free (iterators over fixed arrays).
 #[inline(always)]
@@ -259,8 +237,7 @@ pub(crate) fn dormand_prince<T: Real, R: Rhs<T>>(
         }
         h = smaller(h, remaining);
         // The stages written out (as `dormand_prince_stages`): through the shared function
-        // the compiler keeps the stages in memory and the flight costs 1.5 % more host
-        // instructions.
+        // the compiler keeps the stages in memory, which costs the flight (docs/flight.md).
         let k2 = rhs.eval(&combine(&y, h, A2, [&k1]));
         let k3 = rhs.eval(&combine(&y, h, A3, [&k1, &k2]));
         let k4 = rhs.eval(&combine(&y, h, A4, [&k1, &k2, &k3]));

@@ -15,10 +15,10 @@
 //! The landing is the root of `y(θ) − h_land`, the apex the root of `v_y(θ)`: both inside
 //! the step, never a step end or the highest sample.
 
-use super::{Recorder, Sample};
 use crate::aero::{S, State, VY, Y};
 use crate::error::{Error, Result};
 use crate::real::{Real, larger, lit, smaller, to_f64};
+use crate::trajectory::{Plane, Recorder, Sample};
 use nalgebra::Vector3;
 
 /// Dense-output weights dᵢ of DOPRI5 (Hairer's `CONTD5`), for k₁, k₃, k₄, k₅, k₆, k₇.
@@ -199,14 +199,6 @@ impl<T: Real> Landing<T> {
             state: step.state_at(th),
         }
     }
-}
-
-/// A ground plane `n·p = c` (unit normal `n` pointing up out of the ground): a hop after
-/// a bounce ends when the ball comes down through it.
-#[derive(Debug, Clone, Copy)]
-pub(crate) struct Plane<T> {
-    pub(crate) normal: Vector3<T>,
-    pub(crate) offset: T,
 }
 
 /// Tracks the apex, the landing and the recording across accepted steps.
