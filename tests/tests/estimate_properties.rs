@@ -35,6 +35,8 @@ struct Input {
     noise_scale: f64,
     prior_scale: f64,
     iterations: u8,
+    /// `Settings::tolerance` (posterior σ).
+    tolerance: f64,
 }
 
 fn input() -> impl Strategy<Value = Input> {
@@ -66,6 +68,7 @@ fn input() -> impl Strategy<Value = Input> {
                 noise_scale,
                 prior_scale,
                 iterations,
+                tolerance: carry_core::estimate::TOLERANCE,
             },
         )
 }
@@ -84,6 +87,7 @@ fn run<T: Real>(i: &Input) -> Result<Estimate<T>, Error> {
         sd: Unknowns::from_array(s.prior.sd.to_array().map(|v| v * lit(i.prior_scale))),
     };
     s.max_iterations = i.iterations;
+    s.tolerance = lit(i.tolerance);
     let c = |v: Option<f64>| v.map(lit::<T>);
     let [speed, attack, path, face, loft] = i.club;
     let club_data = ClubData {
@@ -184,13 +188,15 @@ proptest! {
             noise_scale: 1.0,
             prior_scale: 1.0,
             iterations: 30,
+            tolerance: 0.01,
         };
         let (Ok(a), Ok(b)) = (run::<f64>(&input), run::<f32>(&input)) else {
             return Err(TestCaseError::fail("no estimate"));
         };
-        // within a tenth of the posterior 1σ (the stopping tolerance) of each other
+        // each stops within the tolerance (0.01 posterior σ) of the optimum: they agree to
+        // a few times that
         for ((x, y), s) in a.value.to_array().iter().zip(b.value.to_array()).zip(a.sd.to_array()) {
-            prop_assert!((x - to_f64(y)).abs() <= 0.25 * s + 1e-6, "{a:?}\n{b:?}");
+            prop_assert!((x - to_f64(y)).abs() <= 0.05 * s + 1e-6, "{a:?}\n{b:?}");
         }
     }
 }

@@ -226,7 +226,27 @@ fn iterate<T: Real>(
     // iteration's Jacobian, gradient and step it is updated from
     let mut secant = M7::<T>::zeros();
     let mut previous: Option<(Jacobian<T>, V7<T>, V7<T>)> = None;
+    // the last Jacobian with Broyden's rank-one update along the last step: good enough to
+    // tell that the iteration has converged (and for the covariance), saving the seven
+    // forward evaluations of a fresh Jacobian at the end
+    let mut broyden: Option<Jacobian<T>> = None;
+    let weight = V7::from(UNIT.map(|u| T::one() / lit::<T>(u * u)));
     for iteration in 1..=max_iterations {
+        if let Some(jb) = broyden.take() {
+            let jt = jb.transpose();
+            let a = jt * jb + q;
+            let g = jt * r + problem.q.component_mul(&(x - problem.m));
+            let (_, newton) = newton_step(&a, &mut secant, &g)?;
+            if -g.dot(&newton) <= tolerance * tolerance {
+                return Ok(Solution {
+                    x,
+                    a,
+                    jac: jb,
+                    f,
+                    iterations: iteration,
+                });
+            }
+        }
         let jac = jacobian(problem, &x, &r, &unit)?;
         let jt = jac.transpose();
         let a = jt * jac + q;
@@ -234,20 +254,7 @@ fn iterate<T: Real>(
         if let Some((jp, gp, s)) = previous {
             update_secant(&mut secant, &s, &(g - gp), &((jac - jp).transpose() * r));
         }
-        // the model Hessian: Gauss–Newton's, plus the secant term where that keeps it
-        // positive definite
-        let model = a + secant;
-        let mut normal = model;
-        let (model, newton) = match solve_gauss(&mut normal, &(-g), Pivoting::Equilibrated) {
-            Ok(d) if g.dot(&d) < T::zero() => (model, d),
-            _ => {
-                secant = M7::zeros();
-                let mut normal = a;
-                let d = solve_gauss(&mut normal, &(-g), Pivoting::Equilibrated)
-                    .map_err(|_| Error::IllPosed)?;
-                (a, d)
-            }
-        };
+        let (model, newton) = newton_step(&a, &mut secant, &g)?;
         // converged when the Newton step is below `tolerance` posterior σ: its Mahalanobis
         // length² is the Newton decrement −gᵀδ
         if -g.dot(&newton) <= tolerance * tolerance {
@@ -308,13 +315,39 @@ fn iterate<T: Real>(
                 }
             }
         }
-        previous = Some((jac, g, next - x));
+        let step = next - x;
+        let scaled = step.component_mul(&weight);
+        let norm = step.dot(&scaled);
+        if norm > T::zero() {
+            let update = (rn - r - jac * step) * (scaled.transpose() / norm);
+            if update.iter().all(|v| v.is_finite()) {
+                broyden = Some(jac + update);
+            }
+        }
+        previous = Some((jac, g, step));
         x = next;
         f = fn_;
         r = rn;
         cost = cn;
     }
     Err(Error::NoConvergence)
+}
+
+/// The Newton step of the model Hessian: Gauss–Newton's `a` plus the secant term where
+/// that keeps the step a descent direction (else the secant term is dropped).
+fn newton_step<T: Real>(a: &M7<T>, secant: &mut M7<T>, g: &V7<T>) -> Result<(M7<T>, V7<T>)> {
+    let model = a + *secant;
+    let mut normal = model;
+    match solve_gauss(&mut normal, &(-g), Pivoting::Equilibrated) {
+        Ok(d) if g.dot(&d) < T::zero() => Ok((model, d)),
+        _ => {
+            *secant = M7::zeros();
+            let mut normal = *a;
+            let d = solve_gauss(&mut normal, &(-g), Pivoting::Equilibrated)
+                .map_err(|_| Error::IllPosed)?;
+            Ok((*a, d))
+        }
+    }
 }
 
 /// The Dennis–Gay–Welsch secant update of `S ≈ Σ r_k ∇²r_k` (NL2SOL: Dennis, Gay &
