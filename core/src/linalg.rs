@@ -236,93 +236,6 @@ impl<T: Real> Ldl3<T> {
     }
 }
 
-/// The LDLᵀ factors of a symmetric positive definite `N×N` matrix (Golub & Van Loan,
-/// Alg. 4.1.2): factor once, solve for several right-hand sides. The estimator's 7×7 normal
-/// matrices use it (about a third of [`solve_gauss`]'s work, no pivoting: an SPD matrix
-/// needs none). Every access is a checked `get`: no panic path.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Ldl<T: Real, const N: usize> {
-    /// Unit lower triangle `L` (the diagonal and above unused).
-    l: SMatrix<T, N, N>,
-    /// The diagonal `D`.
-    d: SVector<T, N>,
-}
-
-#[inline(always)]
-fn at<T: Real, const N: usize>(m: &SMatrix<T, N, N>, i: usize, j: usize) -> T {
-    m.get((i, j)).copied().unwrap_or_else(T::zero)
-}
-
-impl<T: Real, const N: usize> Ldl<T, N> {
-    /// Factors `k` (its lower triangle is read).
-    ///
-    /// # Errors
-    /// [`Error::Singular`] when a pivot `d_j ≤ N·ε·max|k|` (not numerically positive
-    /// definite) or is not finite.
-    pub fn factor(k: &SMatrix<T, N, N>) -> Result<Self> {
-        let tiny = lit::<T>(N as f64) * T::default_epsilon() * k.amax();
-        let mut l = SMatrix::<T, N, N>::zeros();
-        let mut d = SVector::<T, N>::zeros();
-        for j in 0..N {
-            let mut dj = at(k, j, j);
-            for p in 0..j {
-                let ljp = at(&l, j, p);
-                dj -= ljp * ljp * d.get(p).copied().unwrap_or_else(T::zero);
-            }
-            if !(dj > tiny && dj.is_finite()) {
-                return Err(Error::Singular);
-            }
-            if let Some(v) = d.get_mut(j) {
-                *v = dj;
-            }
-            for i in j + 1..N {
-                let mut v = at(k, i, j);
-                for p in 0..j {
-                    v -= at(&l, i, p) * at(&l, j, p) * d.get(p).copied().unwrap_or_else(T::zero);
-                }
-                if let Some(e) = l.get_mut((i, j)) {
-                    *e = v / dj;
-                }
-            }
-        }
-        Ok(Self { l, d })
-    }
-
-    /// Solves `K x = b`.
-    ///
-    /// # Errors
-    /// [`Error::Singular`] when the solution is not finite.
-    pub fn solve(&self, b: &SVector<T, N>) -> Result<SVector<T, N>> {
-        let mut x = *b;
-        // forward: L y = b
-        for i in 0..N {
-            let mut v = x.get(i).copied().unwrap_or_else(T::zero);
-            for p in 0..i {
-                v -= at(&self.l, i, p) * x.get(p).copied().unwrap_or_else(T::zero);
-            }
-            if let Some(e) = x.get_mut(i) {
-                *e = v;
-            }
-        }
-        // diagonal, then back: Lᵀ x = y / d
-        for i in (0..N).rev() {
-            let di = self.d.get(i).copied().unwrap_or_else(T::one);
-            let mut v = x.get(i).copied().unwrap_or_else(T::zero) / di;
-            for p in i + 1..N {
-                v -= at(&self.l, p, i) * x.get(p).copied().unwrap_or_else(T::zero);
-            }
-            if let Some(e) = x.get_mut(i) {
-                *e = v;
-            }
-        }
-        if x.iter().all(|v| v.is_finite()) {
-            Ok(x)
-        } else {
-            Err(Error::Singular)
-        }
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -365,23 +278,6 @@ mod tests {
             solve_gauss(&mut z, &Vector3::x(), Pivoting::Equilibrated),
             Err(Error::Singular)
         );
-    }
-
-    #[test]
-    fn ldl_n_solves_and_refuses_indefinite() {
-        let k = Matrix4::new(
-            4.0, 1.0, -0.5, 0.3, //
-            1.0, 3.0, 0.2, 0.1, //
-            -0.5, 0.2, 2.0, -0.4, //
-            0.3, 0.1, -0.4, 1.5,
-        );
-        let b = Vector4::new(1.0, -1.0, 0.5, 2.0);
-        let Ok(x) = Ldl::factor(&k).and_then(|f| f.solve(&b)) else {
-            panic!()
-        };
-        assert!((k * x - b).amax() < 1e-14);
-        let not_pd = Matrix4::from_diagonal(&Vector4::new(1.0, -1.0, 1.0, 1.0));
-        assert_eq!(Ldl::factor(&not_pd), Err(Error::Singular));
     }
 
     #[test]

@@ -17,12 +17,12 @@
 //! step is below `tolerance` posterior σ (`√(−gᵀδ)`) or when no damping makes the cost fall
 //! (stationary to the precision); it fails with [`Error::NoConvergence`] after the budget.
 //! The posterior covariance is `A⁻¹` (Gauss–Newton) at the last Jacobian; each 1σ is
-//! `√(cᵀ A⁻¹ c)` for the datum's gradient `c`, from one LDLᵀ of `A` (diagonally scaled).
+//! `√(cᵀ A⁻¹ c)` for the datum's gradient `c`, from one Gaussian elimination per datum.
 
 use super::model::{Model, SPEED, Unknowns};
 use super::{BallData, ClubData, ClubEstimate, Estimate, Noise, Prior};
 use crate::error::{Error, Result};
-use crate::linalg::Ldl;
+use crate::linalg::{Pivoting, solve_gauss};
 use crate::real::{Real, lit};
 use core::f64::consts::PI;
 use nalgebra::{SMatrix, SVector};
@@ -268,8 +268,8 @@ fn iterate<T: Real>(
         }
         let mut accepted = None;
         for _ in 0..MAX_REJECTS {
-            let damped = model + M7::from_diagonal(&(a.diagonal() * lambda));
-            let Ok(step) = Spd::factor(&damped).and_then(|m| m.solve(&(-g))) else {
+            let mut damped = model + M7::from_diagonal(&(a.diagonal() * lambda));
+            let Ok(step) = solve_gauss(&mut damped, &(-g), Pivoting::Equilibrated) else {
                 lambda *= lit(LAMBDA_GROWTH);
                 continue;
             };
@@ -337,49 +337,16 @@ fn iterate<T: Real>(
 /// that keeps the step a descent direction (else the secant term is dropped).
 fn newton_step<T: Real>(a: &M7<T>, secant: &mut M7<T>, g: &V7<T>) -> Result<(M7<T>, V7<T>)> {
     let model = a + *secant;
-    match Spd::factor(&model).and_then(|m| m.solve(&(-g))) {
-        Ok(d) => Ok((model, d)),
-        Err(_) => {
+    let mut normal = model;
+    match solve_gauss(&mut normal, &(-g), Pivoting::Equilibrated) {
+        Ok(d) if g.dot(&d) < T::zero() => Ok((model, d)),
+        _ => {
             *secant = M7::zeros();
-            let d = Spd::factor(a)
-                .and_then(|m| m.solve(&(-g)))
+            let mut normal = *a;
+            let d = solve_gauss(&mut normal, &(-g), Pivoting::Equilibrated)
                 .map_err(|_| Error::IllPosed)?;
             Ok((*a, d))
         }
-    }
-}
-
-/// A symmetric positive definite 7×7 matrix factored for solving: scaled to a unit
-/// diagonal first (`S M S`, `S = diag(1/√m_ii)`; the unknowns' units differ by up to
-/// 10⁹ in `M`), then LDLᵀ ([`Ldl`]).
-struct Spd<T: Real> {
-    ldl: Ldl<T, 7>,
-    scale: V7<T>,
-}
-
-impl<T: Real> Spd<T> {
-    fn factor(m: &M7<T>) -> Result<Self> {
-        let diagonal = m.diagonal();
-        if !diagonal.iter().all(|d| *d > T::zero() && d.is_finite()) {
-            return Err(Error::Singular);
-        }
-        let scale = diagonal.map(|d| T::one() / d.sqrt());
-        let scaled = M7::from_fn(|i, j| {
-            let (Some(si), Some(sj), Some(mij)) = (scale.get(i), scale.get(j), m.get((i, j)))
-            else {
-                return T::zero();
-            };
-            *mij * *si * *sj
-        });
-        Ok(Self {
-            ldl: Ldl::factor(&scaled)?,
-            scale,
-        })
-    }
-
-    fn solve(&self, b: &V7<T>) -> Result<V7<T>> {
-        let y = self.ldl.solve(&b.component_mul(&self.scale))?;
-        Ok(y.component_mul(&self.scale))
     }
 }
 
@@ -447,9 +414,9 @@ fn posterior<T: Real>(
         f,
         iterations,
     } = solution;
-    let covariance = Spd::factor(a).map_err(|_| Error::IllPosed)?;
     let sd = |c: V7<T>| -> Result<T> {
-        let z = covariance.solve(&c).map_err(|_| Error::IllPosed)?;
+        let mut m = *a;
+        let z = solve_gauss(&mut m, &c, Pivoting::Equilibrated).map_err(|_| Error::IllPosed)?;
         let var = c.dot(&z);
         Ok(if var > T::zero() {
             var.sqrt()
