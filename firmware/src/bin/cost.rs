@@ -325,6 +325,34 @@ fn suite<T: Real>(ticks: &Ticks, k: &mut u32, p: &str) {
                 .map(|e| (u32::from(e.iterations), f64::NAN))
         },
     );
+    // a harder shot, 1.5–2σ of the prior in every datum (more iterations)
+    let hard = black_box(carry_core::estimate::Unknowns {
+        face_angle_rad: carry_core::units::deg(lit(-4.5)),
+        club_path_rad: carry_core::units::deg(lit(6.0)),
+        dynamic_loft_rad: carry_core::units::deg(lit(17.0)),
+        attack_angle_rad: carry_core::units::deg(lit(4.0)),
+        impact_toe_m: lit(-0.018),
+        impact_height_m: lit(-0.009),
+        club_speed_mps: lit(40.0),
+    });
+    let hard_measured = black_box(
+        carry_core::estimate::predict(&est_club, &ball, &hard)
+            .unwrap_or_else(|_| carry_firmware::exit(1)),
+    );
+    let hard_club = black_box(carry_core::estimate::ClubData {
+        club_speed_mps: Some(hard.club_speed_mps),
+        ..carry_core::estimate::ClubData::default()
+    });
+    op(
+        ticks,
+        k,
+        label!("ESTIMATE: a 1.5-2 sigma drive, ball data + club speed"),
+        1,
+        &mut || {
+            carry_core::estimate::estimate(&est_club, &ball, &hard_measured, &hard_club, &settings)
+                .map(|e| (u32::from(e.iterations), f64::NAN))
+        },
+    );
     let ball_only = black_box(carry_core::estimate::ClubData::<T>::default());
     op(
         ticks,
