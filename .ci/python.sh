@@ -31,9 +31,9 @@ say "clippy of the python crate (release: shares build scripts and proc-macros w
 # PYO3_PYTHON: PyO3's build script asks the venv's interpreter for its version.
 (cd python && PYO3_PYTHON="$VENV/bin/python" cargo clippy --release --quiet -- -D warnings)
 
-say "the CLI for the agreement tests (in the python workspace: reuses the extension's build of core, lab and carry-cli)"
-cargo build --release --quiet --manifest-path python/Cargo.toml -p carry-cli --bin carry
-export CARRY_CLI=$PWD/python/target/release/carry
+say "the CLI for the agreement tests (the root workspace's: the python crate depends on core, io and lab only)"
+cargo build --release --quiet -p carry-cli --bin carry
+export CARRY_CLI=$PWD/target/release/carry
 
 say "pytest python/tests"
 # From the repository root, so `import carry` is the installed package, not python/carry.

@@ -203,10 +203,11 @@ impl<T: Real> ClubSpec<T> {
 /// The built-in club presets, longest club first.
 pub const PRESETS: [Preset; 13] = [
     Preset {
-        source: "modern 460 cc driver: the measured Ping i15 head of PHYSICS.md (200 g, CG 40 mm behind the face centre at its height, bulge and roll 0.30 m = 11.8 in, COR 0.83) with a modern head's inertia: heel-toe (Iyy) 4,800 g cm2 (460 cc heads 4,500-5,200), vertical (Izz) 3,200 g cm2 (2/3 of heel-toe, Tutelman's range 1/2-2/3), Ixx scaled with Iyy from the i15 (3,400)",
+        source: "modern 460 cc driver: the measured Ping i15 head of PHYSICS.md (200 g, bulge and roll 0.30 m = 11.8 in, COR 0.83) with a modern head's inertia and CG: heel-toe (Iyy) 4,800 g cm2 (460 cc heads 4,500-5,200), vertical (Izz) 3,200 g cm2 (2/3 of heel-toe, Tutelman's range 1/2-2/3), Ixx scaled with Iyy from the i15 (3,400); CG 40 mm behind the face (Alba: 32-47 mm) and 2.4 mm below the face centre's height, so that its normal projection on the lofted face (the sweet spot) lies 5 mm above the face centre (fitted to TrackMan's ball speed 10-30 mm above the centre, docs/impact.md); typical strike 7 mm above the sweet spot",
         inertia_kgm2: [3.400000e-04, 4.800000e-04, 3.200000e-04],
+        cg_to_face_m: [0.04, -0.005, 0.0],
         typical: TypicalDelivery {
-            impact_height_m: 0.007,
+            impact_height_m: 0.012,
             ..REFERENCE_DRIVER.typical
         },
         ..REFERENCE_DRIVER
@@ -552,13 +553,16 @@ mod tests {
         let mut seed = d.spec::<f64>();
         seed.contact = ContactLaw::Rolling;
         assert_eq!(seed, ClubSpec::<f64>::driver());
-        // the driver preset: the same head but for a modern inertia and the fitted contact
+        // the driver preset: the same head but for a modern inertia and CG height (its sweet
+        // spot 5 mm above the face centre, CG as deep) and the fitted contact
         let p = PRESETS[0];
         assert_eq!(p.name, "driver");
         assert_eq!(
-            (p.mass_kg, p.cg_to_face_m, p.loft_deg, p.roll_radius_m),
-            (d.mass_kg, d.cg_to_face_m, d.loft_deg, d.roll_radius_m)
+            (p.mass_kg, p.loft_deg, p.roll_radius_m, p.cg_to_face_m[0]),
+            (d.mass_kg, d.loft_deg, d.roll_radius_m, d.cg_to_face_m[0])
         );
         assert!(p.inertia_kgm2[1] >= 4.5e-4 && p.inertia_kgm2[1] <= 5.2e-4);
+        // the sweet spot above the face centre, the typical strike above the sweet spot
+        assert!(p.cg_to_face_m[1] < 0.0 && p.typical.impact_height_m > -p.cg_to_face_m[1]);
     }
 }

@@ -12,10 +12,10 @@
 //! parsing.
 #![no_main]
 
-use carry_cli::batch::{self, Job};
 use carry_cli::cli::{Cli, Command};
-use carry_cli::compute::{self, Mode};
-use carry_cli::units::Units;
+use carry_io::batch::{self, Job};
+use carry_io::compute::{self, Mode};
+use carry_io::units::Units;
 use clap::Parser as _;
 use libfuzzer_sys::fuzz_target;
 

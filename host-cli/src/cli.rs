@@ -1,14 +1,14 @@
 //! The command-line grammar (clap derive). Option values are parsed here (finite numbers,
 //! vectors, presets) and applied to [`Params`] in the user's units by [`Key::set`].
 
-use crate::compute::{IntegratorChoice, Numerics, Precision, SolverChoice};
-use crate::error::InputError;
-use crate::params::{
-    Key, Params, Value, parse_finite, parse_preset, parse_radius, parse_tensor, parse_vec3,
-};
-use crate::units::Units;
 use carry_core::impact::ContactLaw;
 use carry_core::{DeliveryConvention, Preset};
+use carry_io::compute::{IntegratorChoice, Numerics, Precision, SolverChoice};
+use carry_io::error::InputError;
+use carry_io::params::{
+    Key, Params, Value, parse_finite, parse_preset, parse_radius, parse_tensor, parse_vec3,
+};
+use carry_io::units::Units;
 use clap::{Args, Parser, Subcommand};
 use std::path::PathBuf;
 
@@ -96,10 +96,10 @@ fn preset(s: &str) -> Result<&'static Preset, String> {
     parse_preset(s)
 }
 fn convention(s: &str) -> Result<DeliveryConvention, String> {
-    crate::params::parse_convention(s)
+    carry_io::params::parse_convention(s)
 }
 fn contact(s: &str) -> Result<ContactLaw<f64>, String> {
-    crate::contact::parse(s)
+    carry_io::contact::parse(s)
 }
 
 /// Club delivery options.
@@ -434,7 +434,9 @@ pub struct BatchArgs {
     /// Input CSV (`-` for standard input). Header: option names in snake_case (club_speed,
     /// attack_angle, impact_toe, …; vectors as one quoted "x,y,z" field or _x, _y, _z
     /// columns; `club` takes a preset name). Missing columns take the command-line values
-    /// or the defaults. Values are in the units of --units.
+    /// or the defaults. Values are in the units of --units. Another `carry batch`'s output
+    /// reads as input: its launch columns (ball_speed_mps, launch_angle_deg, …; SI) are
+    /// used, a row with an error stays one, the other result columns are ignored.
     #[arg(long, short, value_name = "FILE.csv")]
     pub input: PathBuf,
     /// Worker threads (default: all cores).
@@ -629,7 +631,7 @@ impl SceneArgs {
     /// A bad scene file.
     pub fn apply(&self, p: &mut Params, u: Units) -> Result<(), InputError> {
         if let Some(path) = &self.scene {
-            crate::scene::load_file(path, u, p)?;
+            carry_io::scene::load_file(path, u, p)?;
         }
         put(p, u, Key::AirDensity, self.air_density);
         put(p, u, Key::Temperature, self.temperature);

@@ -1,34 +1,33 @@
-//! The `carry` command line as a library: [`run`] parses, dispatches and maps errors to
-//! one line on stderr and an exit status (0 ok, 1 I/O, 2 invalid input; never a panic);
-//! the binary (`src/main.rs`) is a thin shell over it. The modules are public for the fuzz
-//! targets (`fuzz/fuzz_targets/cli.rs`) and tests; they are the CLI's internals, not a
-//! stable API.
+//! The `carry` command line: a shell over carry-io (options, runs, records, batch) and
+//! carry-lab (analyses, fits). [`run`] parses (clap), dispatches and maps errors to one
+//! line on stderr and an exit status (0 ok, 1 I/O, 2 invalid input; never a panic); the
+//! binary (`src/main.rs`) is a thin shell over it. What is here: the grammar ([`cli`] and
+//! the commands' clap structs), the human table ([`table`]), plots ([`plot`]) and exit
+//! codes. The modules are public for the fuzz target that fuzzes the grammar
+//! (`fuzz/fuzz_targets/cli.rs`); no other crate depends on this one.
 // Internal modules of an application, documented where it matters to their readers.
 #![allow(missing_docs)]
 
 pub mod analyses;
-pub mod batch;
+use carry_io::{batch, compute, error, params, report};
 pub mod cli;
 pub mod clubs;
-pub mod compute;
-pub mod contact;
-pub mod error;
 pub mod fit;
-pub mod fit_contact;
-pub mod ground;
-pub mod params;
 pub mod plot;
-pub mod report;
-pub mod scene;
-pub mod units;
+pub mod table;
 
 use clap::Parser as _;
 use cli::{BatchCmd, BenchCmd, Cli, Command, OutputArgs, PlotCmd};
 use compute::Mode;
-use error::{EXIT_INPUT, EXIT_IO, Failure};
+use error::Failure;
 use params::Params;
 use std::io::Write as _;
 use std::process::ExitCode;
+
+/// Exit status for invalid input (also clap's usage-error status).
+pub const EXIT_INPUT: u8 = 2;
+/// Exit status for an I/O failure (writing output, reading a file that exists).
+pub const EXIT_IO: u8 = 1;
 
 /// Runs the command line `args` (the first is the program name), writing to stdout and
 /// stderr; returns the exit status.
@@ -57,47 +56,6 @@ where
             ExitCode::from(EXIT_IO)
         }
     }
-}
-
-/// Why [`analysis`] failed.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub enum AnalysisFailure {
-    /// Invalid input (the CLI's exit status 2): one line naming the option.
-    Input(String),
-    /// Anything else (exit status 1), already a sentence.
-    Failed(String),
-}
-
-/// Runs one of the analyses of `lab` (`optimize`, `sweep`, `dispersion`, `normalize`) from
-/// its command line `args` (program name first, then the subcommand and its options, as on
-/// the terminal) and returns what the command prints instead of writing it: the Python
-/// package's `carry.optimize`, `carry.sweep`, … call this with `--json`.
-///
-/// # Errors
-/// [`AnalysisFailure::Input`] for a usage error, invalid input or another subcommand;
-/// [`AnalysisFailure::Failed`] when a file cannot be written.
-pub fn analysis<I, T>(args: I) -> Result<String, AnalysisFailure>
-where
-    I: IntoIterator<Item = T>,
-    T: Into<std::ffi::OsString> + Clone,
-{
-    let cli = Cli::try_parse_from(args).map_err(|e| AnalysisFailure::Input(usage_line(&e)))?;
-    let out = match cli.command {
-        Command::Optimize(c) => c.run(),
-        Command::Sweep(c) => c.run(),
-        Command::Dispersion(c) => c.run(),
-        Command::Normalize(c) => c.run(),
-        _ => {
-            return Err(AnalysisFailure::Input(
-                "not an analysis: optimize, sweep, dispersion or normalize".to_owned(),
-            ));
-        }
-    };
-    out.map_err(|e| match e {
-        Failure::Input(e) => AnalysisFailure::Input(e.to_string()),
-        Failure::Io(e) => AnalysisFailure::Failed(e.to_string()),
-        Failure::Other(m) => AnalysisFailure::Failed(m),
-    })
 }
 
 /// Help and version print as clap renders them; a usage error prints its first line only.
@@ -189,13 +147,13 @@ fn single(
     } else if output.csv {
         report::single_csv(mode, &r)
     } else {
-        let ctx = report::TableContext {
+        let ctx = table::TableContext {
             club: p.club.preset.name,
             club_speed_mps: (mode != Mode::Flight).then_some(compute::club_speed_mps(p)),
             impact_location_m: (mode != Mode::Flight)
                 .then_some((compute::impact_height_m(p), p.delivery.impact_toe_m)),
         };
-        report::table(mode, &r, output.units, &ctx).into_bytes()
+        table::table(mode, &r, output.units, &ctx).into_bytes()
     };
     write_stdout(&bytes)
 }
@@ -264,7 +222,7 @@ fn dispatch(cli: Cli) -> Result<(), Failure> {
             aero,
         }) => {
             let aero = match aero {
-                Some(a) => carry_lab::aero_file::resolve(&a)
+                Some(a) => carry_io::aero_file::resolve(&a)
                     .map_err(|e| Failure::Input(error::InputError::new("aero", e)))?,
                 None => carry_core::aero::AeroModel::default(),
             };

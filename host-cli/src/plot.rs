@@ -2,12 +2,12 @@
 //! (SVG backend). Each trajectory is the base options plus one `--vary` value or one row
 //! of `--input`.
 
-use crate::batch::{applies, reader};
 use crate::cli::PlotArgs;
-use crate::compute::{self, Mode, Numerics};
-use crate::error::{Failure, InputError};
-use crate::params::{Key, Kind, Params};
-use crate::units::{Quantity, Units};
+use carry_io::batch::{applies, reader};
+use carry_io::compute::{self, Mode, Numerics};
+use carry_io::error::{Failure, InputError};
+use carry_io::params::{Key, Kind, Params};
+use carry_io::units::{Quantity, Units};
 use csv::ByteRecord;
 use plotters::prelude::*;
 use std::fmt::Write as _;

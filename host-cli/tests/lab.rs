@@ -321,37 +321,86 @@ fn help_names_the_options() {
     }
 }
 
-/// `carry_cli::analysis` (what the Python package calls) returns exactly what the command
-/// prints, and fails with the same one line the command prints on stderr.
+/// Issue 24, item 5: an angle given to `carry optimize` holds that variable; with its
+/// range too, the range wins and one note says so on stderr.
 #[test]
-fn analysis_returns_what_the_command_prints() {
-    let args = [
-        "normalize",
-        "--ball-speed",
-        "70",
-        "--temperature",
-        "35",
-        "--json",
-    ];
-    let printed = run(&args).stdout;
-    let returned =
-        carry_cli::analysis(std::iter::once("carry").chain(args)).expect("normalize runs");
-    assert_eq!(returned, printed);
-    let bad = [
+fn optimize_holds_a_given_angle_and_a_range_wins_with_a_note() {
+    let base = [
         "optimize",
         "--club",
         "7iron",
-        "--dynamic-loft-range",
-        "30,20",
+        "--club-speed",
+        "40",
         "--json",
     ];
-    let line = run(&bad).stderr;
-    match carry_cli::analysis(std::iter::once("carry").chain(bad)) {
-        Err(carry_cli::AnalysisFailure::Input(m)) => assert_eq!(format!("carry: {m}\n"), line),
-        other => panic!("{other:?}"),
-    }
-    assert!(matches!(
-        carry_cli::analysis(["carry", "shot", "--json"]),
-        Err(carry_cli::AnalysisFailure::Input(_))
-    ));
+    let held = run(&[&base[..], &["--attack-angle", "-2"]].concat());
+    assert_eq!(held.code, 0, "{}", held.stderr);
+    assert!(held.stderr.is_empty(), "{}", held.stderr);
+    let v: Value = serde_json::from_str(&held.stdout).expect("JSON");
+    assert_eq!(num(&v["attack_angle_deg"]), -2.0);
+    let flat = v["flatness"].as_array().expect("flatness");
+    assert_eq!(flat.len(), 1, "only the dynamic loft is searched: {flat:?}");
+    assert_eq!(flat[0]["variable"], "dynamic_loft_deg");
+
+    // Both angles held and no impact height range: nothing left to search, a one-line
+    // error naming a range to give.
+    let both = ["--dynamic-loft", "25", "--attack-angle", "-2"];
+    rejects(&[&base[..], &both[..]].concat(), "--dynamic-loft-range");
+
+    let ranged = run(&[
+        &base[..],
+        &["--attack-angle", "-2", "--attack-angle-range", "-5,1"],
+    ]
+    .concat());
+    assert_eq!(ranged.code, 0, "{}", ranged.stderr);
+    assert_eq!(ranged.stderr.lines().count(), 1, "{}", ranged.stderr);
+    assert!(
+        ranged.stderr.contains("--attack-angle is ignored")
+            && ranged.stderr.contains("--attack-angle-range"),
+        "{}",
+        ranged.stderr
+    );
+    let v: Value = serde_json::from_str(&ranged.stdout).expect("JSON");
+    assert_eq!(v["flatness"].as_array().map(Vec::len), Some(2));
+}
+
+/// Noise options given to a search that does not use them are noted.
+#[test]
+fn optimize_notes_noise_it_does_not_use() {
+    let r = run(&[
+        "optimize",
+        "--dynamic-loft-range",
+        "8,20",
+        "--face-angle-sd",
+        "2",
+        "--json",
+    ]);
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    assert_eq!(r.stderr.lines().count(), 1, "{}", r.stderr);
+    assert!(
+        r.stderr.contains("--face-angle-sd is ignored"),
+        "{}",
+        r.stderr
+    );
+}
+
+/// The sweep's swing sets the delivery: a delivery option given to it is noted, not
+/// silently dropped.
+#[test]
+fn sweep_notes_the_delivery_options_the_swing_replaces() {
+    let r = run(&[
+        "sweep",
+        "--ball-positions",
+        "0,0.01,0.01",
+        "--attack-angle",
+        "3",
+        "--json",
+    ]);
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    assert_eq!(r.stderr.lines().count(), 1, "{}", r.stderr);
+    assert!(
+        r.stderr.contains("--attack-angle is ignored"),
+        "{}",
+        r.stderr
+    );
 }

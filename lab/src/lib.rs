@@ -17,13 +17,15 @@
 //! formats; every analysis returns data (and renders tables or charts on request) rather
 //! than printing. docs/optimize.md has the measured figures.
 
-pub mod aero_file;
+/// The aerodynamic model files, now in [`carry_io`] (re-exported for existing paths).
+pub use carry_io::aero_file;
 pub mod dispersion;
 pub mod error;
 pub mod fit;
 pub mod ground_fit;
 pub mod normalize;
 pub mod optimize;
+pub mod request;
 pub mod setup;
 pub mod study;
 pub mod sweep;

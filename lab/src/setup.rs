@@ -5,10 +5,11 @@
 use carry_core::flight::Integrator;
 use carry_core::real::{lit, to_f64};
 use carry_core::shot::{Fidelity, ShotOutcome, play};
-use carry_core::units::{to_deg, to_rpm};
+use carry_core::units::to_deg;
 use carry_core::{
     Ball, ClubHead, Delivery, DeliveryConvention, PreparedScene, Preset, Real, Scene,
 };
+use carry_io::report::LaunchFigures;
 use serde::Serialize;
 
 /// Everything a shot needs besides the delivery, plus the base delivery.
@@ -32,20 +33,9 @@ pub struct Setup<T: Real> {
 /// A shot's launch and landing in reporting units (f64; degrees, rpm, metres).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct ShotSummary {
-    /// Ball speed (m/s).
-    pub ball_speed_mps: f64,
-    /// Launch angle (deg).
-    pub launch_angle_deg: f64,
-    /// Launch direction (deg, + right).
-    pub launch_direction_deg: f64,
-    /// Total spin (rpm).
-    pub spin_rpm: f64,
-    /// Backspin (rpm).
-    pub backspin_rpm: f64,
-    /// Sidespin (rpm, + curves right).
-    pub sidespin_rpm: f64,
-    /// Spin axis (deg, + right).
-    pub spin_axis_deg: f64,
+    /// Ball speed, angles and spins (flattened: the same keys as the CLI's `launch`).
+    #[serde(flatten)]
+    pub launch: LaunchFigures,
     /// Smash factor.
     pub smash_factor: f64,
     /// Carry (m).
@@ -67,13 +57,7 @@ impl ShotSummary {
         let l = &out.impact.launch;
         let f = &out.flight;
         Self {
-            ball_speed_mps: to_f64(l.ball_speed_mps),
-            launch_angle_deg: to_f64(to_deg(l.launch_angle_rad)),
-            launch_direction_deg: to_f64(to_deg(l.launch_direction_rad)),
-            spin_rpm: to_f64(to_rpm(l.spin_radps)),
-            backspin_rpm: to_f64(to_rpm(l.backspin_radps)),
-            sidespin_rpm: to_f64(to_rpm(l.sidespin_radps)),
-            spin_axis_deg: to_f64(to_deg(l.spin_axis_rad)),
+            launch: LaunchFigures::of(l),
             smash_factor: to_f64(l.smash_factor),
             carry_m: to_f64(f.carry_m),
             side_m: to_f64(f.side_m),

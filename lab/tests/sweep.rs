@@ -1,6 +1,6 @@
 //! The swing sweep: the example swing model, derived rates, contact search and errors.
 
-use carry_core::PRESETS;
+use carry_core::presets::REFERENCE_DRIVER;
 use carry_lab::sweep::generate::SwingModel;
 use carry_lab::sweep::{Motion, positions, sweep};
 use carry_lab::{Error, Input, Setup};
@@ -12,7 +12,8 @@ const VELOCITY_TOLERANCE_MPS: f64 = 0.02;
 const SPIN_TOLERANCE_RADPS: f64 = 0.05;
 
 fn setup() -> Setup<f64> {
-    match Setup::standard(&PRESETS[0], 45.0) {
+    // the club `carry sweep` uses when none is named (the shipped example is generated for it)
+    match Setup::standard(&REFERENCE_DRIVER, 45.0) {
         Ok(s) => s,
         Err(e) => panic!("{e}"),
     }

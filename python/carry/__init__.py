@@ -1,6 +1,7 @@
 """carry: golf impact and ball flight over numpy arrays.
 
-The Rust engine of the ``carry`` command line, called from Python:
+The Rust engine of the ``carry`` command line (its library layers: carry-io, carry-lab),
+called from Python:
 
 * :func:`impact` — club delivery → ball launch (``carry impact``),
 * :func:`flight` — launch → flight (``carry flight``),
@@ -27,15 +28,15 @@ plus ``errors``: an object array holding ``None`` or the message of a row that f
     (5,)
 """
 
-from __future__ import annotations
+# The helpers' imports are private (a leading underscore): `dir(carry)` lists the API only.
+import csv as _csv
+import math as _math
+import os as _os
+import tempfile as _tempfile
+import warnings as _warnings
+from typing import Any as _Any, Dict as _Dict, Mapping as _Mapping
 
-import csv
-import math
-import os
-import tempfile
-from typing import Any, Dict, Mapping
-
-import numpy as np
+import numpy as _np
 
 from . import _carry
 
@@ -56,12 +57,13 @@ class ShotError(ValueError):
     broadcast shape, :attr:`message` the reason (``"club_speed: must be positive"``)."""
 
     def __init__(self, index: tuple, message: str) -> None:
-        super().__init__(f"row {index}: {message}")
+        # A scalar call has one row and no index to name.
+        super().__init__(f"row {index}: {message}" if index else message)
         self.index = index
         self.message = message
 
 
-def inputs(mode: str) -> Dict[str, str]:
+def inputs(mode: str) -> _Dict[str, str]:
     """The keyword arguments of ``impact``, ``flight`` or ``shot`` and their kinds
     (``number``, ``radius``, ``vector``, ``tensor``, ``preset``, ``contact``, ``aero``,
     ``bool``, ``ground`` or ``setting``)."""
@@ -76,33 +78,33 @@ def columns(mode: str, ground: bool = False) -> list:
     return list(_carry.columns(mode, ground))
 
 
-def _number_text(name: str, value: Any) -> str:
-    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float, np.number)):
+def _number_text(name: str, value: _Any) -> str:
+    if isinstance(value, (bool, _np.bool_)) or not isinstance(value, (int, float, _np.number)):
         raise ValueError(f"{name}: expected a number, got {type(value).__name__}")
     x = float(value)
-    if not math.isfinite(x):
+    if not _math.isfinite(x):
         raise ValueError(f"{name}: '{x}' is not a finite number")
     return repr(x)
 
 
-def _option_text(mode: str, name: str, kind: str, value: Any) -> str:
+def _option_text(mode: str, name: str, kind: str, value: _Any) -> str:
     """The CLI text of a whole-call option."""
     if kind == "setting":
         if name in ("step", "tolerance"):
             return _number_text(name, value)
-        if name == "scene" and isinstance(value, os.PathLike):
-            return os.fspath(value)
+        if name == "scene" and isinstance(value, _os.PathLike):
+            return _os.fspath(value)
         if not isinstance(value, str):
             raise ValueError(f"{name}: expected a string, got {type(value).__name__}")
         return value
     if kind == "bool":
-        if not isinstance(value, (bool, np.bool_)):
+        if not isinstance(value, (bool, _np.bool_)):
             raise ValueError(f"{name}: expected True or False, got {type(value).__name__}")
         return "true" if value else "false"
     if kind in ("vector", "tensor"):
         sizes = (3,) if kind == "vector" else (3, 9)
         try:
-            v = np.asarray(value, dtype=np.float64)
+            v = _np.asarray(value, dtype=_np.float64)
         except (TypeError, ValueError):
             raise ValueError(f"{name}: expected {' or '.join(map(str, sizes))} numbers") from None
         if v.ndim != 1 or v.size not in sizes:
@@ -112,20 +114,20 @@ def _option_text(mode: str, name: str, kind: str, value: Any) -> str:
             )
         return ",".join(repr(float(x)) for x in v)
     # preset, contact, aero, ground: a name or a file
-    if isinstance(value, os.PathLike):
-        return os.fspath(value)
+    if isinstance(value, _os.PathLike):
+        return _os.fspath(value)
     if not isinstance(value, str):
         raise ValueError(f"{name}: expected a name (str), got {type(value).__name__}")
     return value
 
 
-def _numeric_array(name: str, kind: str, value: Any) -> np.ndarray:
+def _numeric_array(name: str, kind: str, value: _Any) -> _np.ndarray:
     if kind == "radius" and isinstance(value, str) and value.strip().lower() == "flat":
-        return np.asarray(np.inf)
-    if isinstance(value, (str, bytes)) or np.asarray(value).dtype.kind in "USV":
+        return _np.asarray(_np.inf)
+    if isinstance(value, (str, bytes)) or _np.asarray(value).dtype.kind in "USV":
         raise ValueError(f"{name}: expected a number or an array of numbers, got text")
     try:
-        arr = np.asarray(value, dtype=np.float64)
+        arr = _np.asarray(value, dtype=_np.float64)
     except (TypeError, ValueError):
         raise ValueError(
             f"{name}: expected a number or an array of numbers, got {type(value).__name__}"
@@ -133,7 +135,7 @@ def _numeric_array(name: str, kind: str, value: Any) -> np.ndarray:
     return arr
 
 
-def _run(mode: str, kwargs: Mapping[str, Any], raise_on_error: bool) -> Dict[str, np.ndarray]:
+def _run(mode: str, kwargs: _Mapping[str, _Any], raise_on_error: bool) -> _Dict[str, _np.ndarray]:
     kinds = _INPUTS[mode]
     names, arrays, options = [], [], []
     for name, value in kwargs.items():
@@ -150,26 +152,26 @@ def _run(mode: str, kwargs: Mapping[str, Any], raise_on_error: bool) -> Dict[str
         else:
             options.append((name, _option_text(mode, name, kind, value)))
     try:
-        shape = np.broadcast_shapes(*(a.shape for a in arrays)) if arrays else ()
+        shape = _np.broadcast_shapes(*(a.shape for a in arrays)) if arrays else ()
     except ValueError:
         shapes = ", ".join(f"{n} {a.shape}" for n, a in zip(names, arrays))
         raise ValueError(f"{', '.join(names)}: shapes do not broadcast ({shapes})") from None
-    rows = math.prod(shape)
-    flat = [np.ascontiguousarray(np.broadcast_to(a, shape), dtype=np.float64).reshape(-1) for a in arrays]
+    rows = _math.prod(shape)
+    flat = [_np.ascontiguousarray(_np.broadcast_to(a, shape), dtype=_np.float64).reshape(-1) for a in arrays]
     keys, data, failed = _carry.run(mode, names, flat, options, rows)
     if raise_on_error and failed:
         i, message = failed[0]
-        raise ShotError(tuple(int(j) for j in np.unravel_index(i, shape)), message)
+        raise ShotError(tuple(int(j) for j in _np.unravel_index(i, shape)), message)
     # Column views of the (rows, columns) result: no copy.
-    out: Dict[str, Any] = {k: data[:, j].reshape(shape) for j, k in enumerate(keys)}
-    err = np.full(rows, None, dtype=object)
+    out: _Dict[str, _Any] = {k: data[:, j].reshape(shape) for j, k in enumerate(keys)}
+    err = _np.full(rows, None, dtype=object)
     for i, message in failed:
         err[i] = message
     out["errors"] = err.reshape(shape)
     return out
 
 
-def impact(*, raise_on_error: bool = False, **kwargs: Any) -> Dict[str, np.ndarray]:
+def impact(*, raise_on_error: bool = False, **kwargs: _Any) -> _Dict[str, _np.ndarray]:
     """Club delivery → ball launch, as ``carry impact``.
 
     Arguments: delivery (``club_speed``, ``attack_angle``, ``club_path``, ``face_angle``,
@@ -182,7 +184,7 @@ def impact(*, raise_on_error: bool = False, **kwargs: Any) -> Dict[str, np.ndarr
     return _run("impact", kwargs, raise_on_error)
 
 
-def flight(*, raise_on_error: bool = False, **kwargs: Any) -> Dict[str, np.ndarray]:
+def flight(*, raise_on_error: bool = False, **kwargs: _Any) -> _Dict[str, _np.ndarray]:
     """Launch → flight, as ``carry flight``.
 
     Arguments: launch (``ball_speed``, ``launch_angle``, ``launch_direction``, and
@@ -197,19 +199,19 @@ def flight(*, raise_on_error: bool = False, **kwargs: Any) -> Dict[str, np.ndarr
     return _run("flight", kwargs, raise_on_error)
 
 
-def shot(*, raise_on_error: bool = False, **kwargs: Any) -> Dict[str, np.ndarray]:
+def shot(*, raise_on_error: bool = False, **kwargs: _Any) -> _Dict[str, _np.ndarray]:
     """Club delivery → launch → flight, as ``carry shot``: the arguments of
     :func:`impact` and the scene and integrator arguments of :func:`flight`; returns the
     columns of both."""
     return _run("shot", kwargs, raise_on_error)
 
 
-def _column_text(values: np.ndarray) -> list:
+def _column_text(values: _np.ndarray) -> list:
     if values.dtype.kind in "fiub":
-        return ["" if not math.isfinite(x) else repr(x) for x in values.astype(np.float64).tolist()]
+        return ["" if not _math.isfinite(x) else repr(x) for x in values.astype(_np.float64).tolist()]
     out = []
     for x in values.tolist():
-        if x is None or (isinstance(x, float) and math.isnan(x)):
+        if x is None or (isinstance(x, float) and _math.isnan(x)):
             out.append("")
         elif isinstance(x, float):
             out.append(repr(x))
@@ -218,14 +220,14 @@ def _column_text(values: np.ndarray) -> list:
     return out
 
 
-def _table(data: Any) -> Dict[str, np.ndarray]:
+def _table(data: _Any) -> _Dict[str, _np.ndarray]:
     """Columns of a DataFrame, a mapping of arrays or a structured array."""
-    if isinstance(data, np.ndarray) and data.dtype.names:
-        return {n: np.asarray(data[n]) for n in data.dtype.names}
+    if isinstance(data, _np.ndarray) and data.dtype.names:
+        return {n: _np.asarray(data[n]) for n in data.dtype.names}
     if hasattr(data, "columns") and hasattr(data, "__getitem__"):  # pandas DataFrame
-        return {str(c): np.asarray(data[c]) for c in data.columns}
-    if isinstance(data, Mapping):
-        return {str(k): np.atleast_1d(np.asarray(v)) for k, v in data.items()}
+        return {str(c): _np.asarray(data[c]) for c in data.columns}
+    if isinstance(data, _Mapping):
+        return {str(k): _np.atleast_1d(_np.asarray(v)) for k, v in data.items()}
     raise ValueError(
         f"data: expected a DataFrame, a dict of arrays, a structured array or a CSV path, "
         f"got {type(data).__name__}"
@@ -233,11 +235,11 @@ def _table(data: Any) -> Dict[str, np.ndarray]:
 
 
 def fit(
-    data: Any,
+    data: _Any,
     *,
     family: str = "modern",
     evaluate: "str | None" = None,
-    output: "str | os.PathLike | None" = None,
+    output: "str | _os.PathLike | None" = None,
     cross_validation: bool = True,
     units: str = "si",
     air_density: "float | None" = None,
@@ -245,7 +247,7 @@ def fit(
     humidity: "float | None" = None,
     pressure: "float | None" = None,
     altitude: "float | None" = None,
-) -> Dict[str, Any]:
+) -> _Dict[str, _Any]:
     """Fit a model family to measured shots, as ``carry fit --json``.
 
     ``data``: a pandas DataFrame, a dict of arrays, a numpy structured array or a CSV
@@ -260,8 +262,6 @@ def fit(
     ``rows`` with ``observed``/``predicted``/``loo_predicted``, ``summary`` and
     ``loo_summary`` with mean and max errors, ``converged``, …).
     """
-    import json
-
     for name, value in (("air_density", air_density), ("temperature", temperature),
                         ("humidity", humidity), ("pressure", pressure), ("altitude", altitude)):
         if value is not None:
@@ -272,7 +272,7 @@ def fit(
     opts = dict(
         family=family,
         evaluate=evaluate,
-        output=os.fspath(output) if output is not None else None,
+        output=_os.fspath(output) if output is not None else None,
         cross_validation=bool(cross_validation),
         units=units,
         air_density=air_density,
@@ -281,70 +281,71 @@ def fit(
         pressure=pressure,
         altitude=altitude,
     )
-    if isinstance(data, (str, os.PathLike)):
-        return json.loads(_carry.fit_csv(os.fspath(data), **opts))
+    if isinstance(data, (str, _os.PathLike)):
+        return _carry.fit_csv(_os.fspath(data), **opts)
     table = _table(data)
     lengths = {len(v) for v in table.values()}
     if len(lengths) > 1:
         raise ValueError("data: columns differ in length")
-    with tempfile.TemporaryDirectory() as tmp:
-        path = os.path.join(tmp, "shots.csv")
+    with _tempfile.TemporaryDirectory() as tmp:
+        path = _os.path.join(tmp, "shots.csv")
         with open(path, "w", newline="") as f:
-            w = csv.writer(f)
+            w = _csv.writer(f)
             w.writerow(list(table))
             w.writerows(zip(*(_column_text(v) for v in table.values())))
-        return json.loads(_carry.fit_csv(path, **opts))
+        return _carry.fit_csv(path, **opts)
 
 
-def _option_value(name: str, value: Any) -> str:
+def _option_value(name: str, value: _Any) -> str:
     """One option value as the command line takes it: a number, a string or path, or a
     sequence joined by commas (``dynamic_loft_range=(8, 20)``)."""
-    if isinstance(value, (str, os.PathLike)):
-        return os.fspath(value)
-    if isinstance(value, (list, tuple, np.ndarray)):
-        return ",".join(_number_text(name, v) for v in np.asarray(value).ravel())
-    if isinstance(value, (int, np.integer)) and not isinstance(value, (bool, np.bool_)):
+    if isinstance(value, (str, _os.PathLike)):
+        return _os.fspath(value)
+    if isinstance(value, (list, tuple, _np.ndarray)):
+        return ",".join(_number_text(name, v) for v in _np.asarray(value).ravel())
+    if isinstance(value, (int, _np.integer)) and not isinstance(value, (bool, _np.bool_)):
         return str(int(value))
     return _number_text(name, value)
 
 
-def _analysis(command: str, kwargs: Mapping[str, Any]) -> Dict[str, Any]:
-    """``carry <command> --json`` with ``kwargs`` as its options (snake_case → ``--kebab-case``;
-    ``True`` gives a bare flag, ``False``/``None`` leaves the option out)."""
-    import json
-
-    argv = ["carry", command, "--json"]
+def _analysis(command: str, kwargs: _Mapping[str, _Any]) -> _Dict[str, _Any]:
+    """lab's typed ``command`` request with ``kwargs`` as its options (``True`` sets a flag,
+    ``False``/``None`` leaves the option out); returns the document ``carry <command>
+    --json`` prints, as Python objects. An option the analysis replaces (e.g. ``attack_angle``
+    with ``attack_angle_range``) gives a :class:`UserWarning` naming it."""
+    options = []
     for name, value in kwargs.items():
         if name in ("json", "csv"):
             raise ValueError(f"{name}: the Python functions always return the JSON document")
         if value is None or value is False:
             continue
-        flag = "--" + name.replace("_", "-")
-        if value is True:
-            argv.append(flag)
-        else:
-            argv.append(f"{flag}={_option_value(name, value)}")
-    return json.loads(_carry.analysis(argv))
+        options.append((name, "true" if value is True else _option_value(name, value)))
+    doc, notes = _carry.analysis(command, options)
+    for note in notes:
+        _warnings.warn(f"carry.{command}: {note}", stacklevel=3)
+    return doc
 
 
-def optimize(**kwargs: Any) -> Dict[str, Any]:
+def optimize(**kwargs: _Any) -> _Dict[str, _Any]:
     """The delivery that maximises carry (or total, or minimises dispersion), as
     ``carry optimize --json``: ``club``, ``club_speed``, ``dynamic_loft_range=(lo, hi)``,
-    ``attack_angle_range``, ``impact_height_range``, ``objective``, ``starts``, … With
+    ``attack_angle_range``, ``impact_height_range``, ``objective``, ``starts``, … A given
+    ``dynamic_loft``, ``attack_angle`` or ``impact_height`` holds that variable (its range
+    frees it again, with a warning). With
     ``chart=True``, ``club_speeds=(from, to, step)`` and ``attack_angles=(…)``: the optimizer
     chart. Returns the JSON document (``dynamic_loft_deg``, ``attack_angle_deg``,
     ``carry_m``, the launch, evaluations, flatness)."""
     return _analysis("optimize", kwargs)
 
 
-def sweep(**kwargs: Any) -> Dict[str, Any]:
+def sweep(**kwargs: _Any) -> _Dict[str, _Any]:
     """Carry, side, launch and spin against the ball position along a swing, as
     ``carry sweep --json``: ``swing`` (a CSV of club-head samples; without it the built-in
     example swing), ``ball_positions=(from, to, step)``, the club and scene options."""
     return _analysis("sweep", kwargs)
 
 
-def dispersion(**kwargs: Any) -> Dict[str, Any]:
+def dispersion(**kwargs: _Any) -> _Dict[str, _Any]:
     """Monte-Carlo dispersion over delivery noise, as ``carry dispersion --json``:
     ``face_angle_sd``, ``club_path_sd``, ``attack_angle_sd``, ``dynamic_loft_sd``,
     ``club_speed_sd``, ``impact_height_sd``, ``impact_toe_sd``, ``shots``, ``seed``, … Returns
@@ -355,7 +356,7 @@ def dispersion(**kwargs: Any) -> Dict[str, Any]:
     return _analysis("dispersion", kwargs)
 
 
-def normalize(**kwargs: Any) -> Dict[str, Any]:
+def normalize(**kwargs: _Any) -> _Dict[str, _Any]:
     """A launch's carry in standard conditions (sea level, 21 °C, 50 % RH, no wind) and in
     the given ones, as ``carry normalize --json``: the launch options, the conditions and
     ``to="standard"`` (default) or ``"conditions"``."""

@@ -1,16 +1,16 @@
 //! Keyword arguments → one request: the options every row shares (a base [`Params`],
 //! numerics, units) and the keys of the per-row numeric columns.
 //!
-//! Names are the CLI's options in snake_case (its `params::Key` table), plus `units`,
+//! Names are the CLI's options in snake_case (carry-io's `params::Key` table), plus `units`,
 //! `scene`, `precision`, `solver`, `integrator`, `step` and `tolerance`. Options apply in the
 //! CLI's order: units, scene file, club, the other options, then each row's numbers.
 
-use carry_cli::batch::applies;
-use carry_cli::compute::{IntegratorChoice, Mode, Numerics, Precision, SolverChoice};
-use carry_cli::error::InputError;
-use carry_cli::params::{Key, Kind, Params, Value, parse_finite};
-use carry_cli::units::Units;
-use clap::ValueEnum;
+use carry_io::batch::applies;
+use carry_io::choice::Choice;
+use carry_io::compute::{IntegratorChoice, Mode, Numerics, Precision, SolverChoice};
+use carry_io::error::InputError;
+use carry_io::params::{Key, Kind, Params, Value, parse_finite};
+use carry_io::units::Units;
 use std::fmt;
 
 /// A bad argument: which one and why (raised as `ValueError`).
@@ -123,17 +123,8 @@ pub struct Request {
     pub ground: bool,
 }
 
-fn value_enum<E: ValueEnum>(arg: &str, text: &str) -> Result<E, ArgError> {
-    E::from_str(text.trim(), true).map_err(|_| {
-        let names: Vec<String> = E::value_variants()
-            .iter()
-            .filter_map(|v| v.to_possible_value().map(|p| p.get_name().to_owned()))
-            .collect();
-        ArgError::new(
-            arg,
-            format!("invalid value '{text}' (one of: {})", names.join(", ")),
-        )
-    })
+fn value_enum<E: Choice>(arg: &str, text: &str) -> Result<E, ArgError> {
+    E::parse(text).map_err(|reason| ArgError::new(arg, reason))
 }
 
 fn key_of(mode: Mode, name: &str) -> Result<Key, ArgError> {
@@ -148,21 +139,6 @@ fn key_of(mode: Mode, name: &str) -> Result<Key, ArgError> {
             format!("is not an input of carry.{}", mode_name(mode)),
         ))
     }
-}
-
-/// Is `key` one of the ground's options (which add the ground's output columns)?
-fn is_ground_key(key: Key) -> bool {
-    matches!(
-        key,
-        Key::Ground
-            | Key::Stimp
-            | Key::GroundSlope
-            | Key::GroundSlopeDirection
-            | Key::GroundRestitution
-            | Key::GroundFriction
-            | Key::RollingResistance
-            | Key::CraterScale
-    )
 }
 
 /// Resolves the options (name, text) and the names of the numeric columns.
@@ -195,7 +171,7 @@ pub fn request(
         }
     }
     if let Some(path) = get("scene") {
-        carry_cli::scene::load_file(std::path::Path::new(path), units, &mut base)?;
+        carry_io::scene::load_file(std::path::Path::new(path), units, &mut base)?;
     }
     if let Some(t) = get("precision") {
         numerics.precision = value_enum::<Precision>("precision", t)?;
@@ -239,8 +215,8 @@ pub fn request(
     }
     let ground = mode != Mode::Impact
         && (!base.scene.ground.is_empty()
-            || keyed.iter().any(|(k, _)| is_ground_key(*k))
-            || keys.iter().any(|k| is_ground_key(*k)));
+            || keyed.iter().any(|(k, _)| k.is_ground())
+            || keys.iter().any(|k| k.is_ground()));
     Ok(Request {
         mode,
         base,

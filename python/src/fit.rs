@@ -1,9 +1,10 @@
-//! `carry.fit`: the CLI's `carry fit --json` on a CSV file the Python layer writes.
+//! `carry.fit`: lab's typed fit request ([`carry_lab::fit::request`]) on a CSV file the
+//! Python layer writes; the JSON document comes back as a value, not text.
 
-use carry_cli::error::Failure;
-use carry_cli::fit::{FitCmd, report};
-use carry_cli::units::Units;
-use clap::ValueEnum;
+use carry_io::choice::Choice;
+use carry_io::error::Failure;
+use carry_io::units::Units;
+use carry_lab::fit::request::{FitRequest, document};
 use std::path::PathBuf;
 
 /// The options of a fit, as Python passes them.
@@ -42,38 +43,16 @@ pub enum FitError {
     Failed(String),
 }
 
-/// Runs the fit; returns `carry fit --json`'s document.
+/// Runs the fit; returns the document `carry fit --json` prints.
 ///
 /// # Errors
 /// A [`FitError`].
-pub fn run(args: &FitArgs) -> Result<String, FitError> {
+pub fn run(args: &FitArgs) -> Result<serde_json::Value, FitError> {
     let units = match &args.units {
-        Some(t) => Units::from_str(t, true).map_err(|_| {
-            FitError::Input(format!("units: invalid value '{t}' (one of: si, imperial)"))
-        })?,
+        Some(t) => Units::parse(t).map_err(|r| FitError::Input(format!("units: {r}")))?,
         None => Units::Si,
     };
-    if args.air_density.is_some()
-        && (args.temperature.is_some()
-            || args.humidity.is_some()
-            || args.pressure.is_some()
-            || args.altitude.is_some())
-    {
-        return Err(FitError::Input(
-            "air_density: give either the air density or the weather, not both".into(),
-        ));
-    }
-    if args.pressure.is_some() && args.altitude.is_some() {
-        return Err(FitError::Input(
-            "pressure: give either the pressure or the altitude, not both".into(),
-        ));
-    }
-    if args.output.is_some() && args.evaluate.is_some() {
-        return Err(FitError::Input(
-            "output: cannot be used with evaluate".into(),
-        ));
-    }
-    let cmd = FitCmd {
+    let request = FitRequest {
         input: args.input.clone(),
         also: Vec::new(),
         family: args.family.clone(),
@@ -89,7 +68,7 @@ pub fn run(args: &FitArgs) -> Result<String, FitError> {
         pressure: args.pressure,
         altitude: args.altitude,
     };
-    report(&cmd).map_err(|e| match e {
+    document(&request).map_err(|e| match e {
         Failure::Input(e) => FitError::Input(e.as_column()),
         Failure::Io(e) => FitError::Failed(e.to_string()),
         Failure::Other(m) => FitError::Failed(m),

@@ -1,17 +1,20 @@
 //! `carry._carry`: the native half of the Python package `carry` (PyO3, rust-numpy).
 //!
 //! The Python layer (`carry/__init__.py`) checks and broadcasts the keyword arguments and
-//! passes flat `float64` columns here; [`run`] resolves the options with the CLI's own
-//! option table ([`args`]), computes every row in parallel with the GIL released
+//! passes flat `float64` columns here; [`run`] resolves the options with carry-io's option
+//! table, the CLI's own ([`args`]), computes every row in parallel with the GIL released
 //! ([`rows`]) into one (rows × columns) array whose columns are the CLI batch CSV's.
-//! [`fit_csv`] is `carry fit --json`; [`analysis`] runs `carry optimize`, `sweep`,
-//! `dispersion` and `normalize` with `--json`.
+//! [`fit_csv`] is lab's typed fit request and [`analysis`] lab's typed analysis requests
+//! (`optimize`, `sweep`, `dispersion`, `normalize`); both return the document the CLI's
+//! `--json` prints, as Python objects. This crate depends on carry-core, carry-io and
+//! carry-lab only: no command-line grammar.
 
+mod analyses;
 mod args;
 mod fit;
 mod rows;
 
-use carry_cli::compute::Mode;
+use carry_io::compute::Mode;
 use numpy::{PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray1};
 use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
@@ -82,10 +85,40 @@ type Output<'py> = (
 /// The output column names of `mode` (with the ground's when `ground`).
 #[pyfunction]
 fn columns(mode: &str, ground: bool) -> PyResult<Vec<&'static str>> {
-    Ok(carry_cli::report::csv_columns(mode_of(mode)?, ground))
+    Ok(carry_io::report::csv_columns(mode_of(mode)?, ground))
 }
 
-/// `carry fit --json` on the CSV file `input`; returns the JSON text.
+/// A JSON value as Python objects: dict, list, float or int, str, bool, None.
+fn to_py<'py>(py: Python<'py>, v: &serde_json::Value) -> PyResult<Bound<'py, PyAny>> {
+    use pyo3::types::{PyDict, PyList};
+    use serde_json::Value;
+    Ok(match v {
+        Value::Null => py.None().into_bound(py),
+        Value::Bool(b) => b.into_pyobject(py)?.to_owned().into_any(),
+        Value::Number(n) => match (n.as_u64(), n.as_i64()) {
+            (Some(u), _) => u.into_pyobject(py)?.into_any(),
+            (None, Some(i)) => i.into_pyobject(py)?.into_any(),
+            _ => n.as_f64().unwrap_or(f64::NAN).into_pyobject(py)?.into_any(),
+        },
+        Value::String(s) => s.into_pyobject(py)?.into_any(),
+        Value::Array(a) => {
+            let items = a
+                .iter()
+                .map(|x| to_py(py, x))
+                .collect::<PyResult<Vec<_>>>()?;
+            PyList::new(py, items)?.into_any()
+        }
+        Value::Object(m) => {
+            let d = PyDict::new(py);
+            for (k, x) in m {
+                d.set_item(k, to_py(py, x)?)?;
+            }
+            d.into_any()
+        }
+    })
+}
+
+/// `carry fit --json` on the CSV file `input`; returns the document.
 #[pyfunction]
 #[pyo3(signature = (input, family, evaluate=None, output=None, cross_validation=true,
     units=None, air_density=None, temperature=None, humidity=None, pressure=None,
@@ -104,7 +137,7 @@ fn fit_csv(
     humidity: Option<f64>,
     pressure: Option<f64>,
     altitude: Option<f64>,
-) -> PyResult<String> {
+) -> PyResult<Py<PyAny>> {
     let a = fit::FitArgs {
         input,
         family,
@@ -118,22 +151,30 @@ fn fit_csv(
         pressure,
         altitude,
     };
-    py.detach(|| fit::run(&a)).map_err(|e| match e {
+    let doc = py.detach(|| fit::run(&a)).map_err(|e| match e {
         fit::FitError::Input(m) => PyValueError::new_err(m),
         fit::FitError::Failed(m) => PyRuntimeError::new_err(m),
-    })
+    })?;
+    Ok(to_py(py, &doc)?.unbind())
 }
 
-/// One of the CLI's analyses (`optimize`, `sweep`, `dispersion`, `normalize`) from its
-/// argument vector (program name first); returns what the command prints. Invalid input
-/// raises `ValueError` with the CLI's one line (naming the option).
+/// One of lab's analyses (`optimize`, `sweep`, `dispersion`, `normalize`) with `options`
+/// ((name, text) pairs, flags as `true`); returns (the document `carry <command> --json`
+/// prints, the notes of options it replaced). Invalid input raises `ValueError` with the
+/// CLI's one line (naming the option).
 #[pyfunction]
-fn analysis(py: Python<'_>, argv: Vec<String>) -> PyResult<String> {
-    py.detach(|| carry_cli::analysis(argv))
+fn analysis(
+    py: Python<'_>,
+    command: String,
+    options: Vec<(String, String)>,
+) -> PyResult<(Py<PyAny>, Vec<String>)> {
+    let (doc, notes) = py
+        .detach(|| analyses::run(&command, &options))
         .map_err(|e| match e {
-            carry_cli::AnalysisFailure::Input(m) => PyValueError::new_err(m),
-            carry_cli::AnalysisFailure::Failed(m) => PyRuntimeError::new_err(m),
-        })
+            analyses::AnalysisError::Input(m) => PyValueError::new_err(m),
+            analyses::AnalysisError::Failed(m) => PyRuntimeError::new_err(m),
+        })?;
+    Ok((to_py(py, &doc)?.unbind(), notes))
 }
 
 /// The native module.

@@ -1,12 +1,12 @@
 //! The rows of one call, computed in parallel (rayon, all cores) into columns.
 
 use crate::args::{Request, check_value};
-use carry_cli::compute::{self, Mode, Precision};
-use carry_cli::error::InputError;
-use carry_cli::params::{Key, Params};
-use carry_cli::report::{csv_columns, csv_values};
-use carry_cli::scene::SCENE_KEYS;
 use carry_core::{PreparedScene, Real};
+use carry_io::compute::{self, Mode, Precision};
+use carry_io::error::InputError;
+use carry_io::params::{Key, Params};
+use carry_io::report::{csv_columns, csv_values};
+use carry_io::scene::SCENE_KEYS;
 use rayon::prelude::*;
 
 /// Rows per parallel work item.

@@ -1,25 +1,18 @@
 //! `carry dispersion`: Monte-Carlo over delivery noise.
 
-use super::{ShotArgs, failure, output, with_setup, write_svg};
+use super::{ShotArgs, output, write_svg};
 use crate::cli::OutputArgs;
-use crate::error::{Failure, InputError};
-use crate::params::parse_finite;
-use crate::units::{Quantity, Units};
-use carry_core::Real;
-use carry_lab::Setup;
-use carry_lab::dispersion::{self, Dispersion, Noise};
+use carry_io::error::Failure;
+use carry_io::units::{Quantity, Units};
+use carry_lab::dispersion::{self, Dispersion};
+use carry_lab::request::{DispersionRequest, NoiseSd};
 use clap::Args;
 use std::fmt::Write as _;
 use std::io::IsTerminal as _;
 use std::path::PathBuf;
 
 fn sd(s: &str) -> Result<f64, String> {
-    let x = parse_finite(s)?;
-    if x < 0.0 {
-        Err("must not be negative".into())
-    } else {
-        Ok(x)
-    }
+    carry_lab::request::parse_sd(s)
 }
 
 /// Delivery noise: standard deviations, named after the delivery options.
@@ -50,17 +43,17 @@ pub struct NoiseArgs {
 }
 
 impl NoiseArgs {
-    /// The noise in SI (speed m/s, location m), from `units`.
+    /// The standard deviations, in the user's units.
     #[must_use]
-    pub fn noise(&self, u: Units) -> Noise {
-        Noise {
-            face_angle_deg: self.face_angle_sd,
-            club_path_deg: self.club_path_sd,
-            attack_angle_deg: self.attack_angle_sd,
-            dynamic_loft_deg: self.dynamic_loft_sd,
-            club_speed_mps: u.to_si(Quantity::Speed, self.club_speed_sd),
-            impact_height_m: u.to_si(Quantity::Offset, self.impact_height_sd),
-            impact_toe_m: u.to_si(Quantity::Offset, self.impact_toe_sd),
+    pub fn sd(&self) -> NoiseSd {
+        NoiseSd {
+            face_angle_sd: self.face_angle_sd,
+            club_path_sd: self.club_path_sd,
+            attack_angle_sd: self.attack_angle_sd,
+            dynamic_loft_sd: self.dynamic_loft_sd,
+            club_speed_sd: self.club_speed_sd,
+            impact_height_sd: self.impact_height_sd,
+            impact_toe_sd: self.impact_toe_sd,
         }
     }
 }
@@ -99,15 +92,24 @@ pub struct DispersionCmd {
     pub output: OutputArgs,
 }
 
-/// Default number of shots.
-const DEFAULT_SHOTS: usize = 10_000;
 /// A progress bar shows on a terminal from this many shots.
 const PROGRESS_SHOTS: usize = 50_000;
 
 impl DispersionCmd {
-    fn simulate<T: Real>(&self, setup: &Setup<T>) -> Result<Dispersion, Failure> {
-        let shots = self.monte_carlo.shots.unwrap_or(DEFAULT_SHOTS);
-        let noise = self.noise.noise(self.output.units);
+    /// Runs the command; returns the text to print.
+    ///
+    /// # Errors
+    /// Bad options (status 2), failing to write the SVG (status 1).
+    pub fn run(&self) -> Result<String, Failure> {
+        let (p, n) = self.shot.resolve(self.output.units)?;
+        let request = DispersionRequest {
+            units: self.output.units,
+            noise: self.noise.sd(),
+            shots: self.monte_carlo.shots,
+            seed: self.monte_carlo.seed,
+            threads: self.threads,
+        };
+        let shots = request.shots();
         let bar = (!self.no_progress && shots >= PROGRESS_SHOTS && std::io::stderr().is_terminal())
             .then(|| {
                 let bar = indicatif::ProgressBar::new(shots as u64);
@@ -122,23 +124,11 @@ impl DispersionCmd {
                 b.inc(n as u64);
             }
         };
-        let result = dispersion::simulate(setup, &noise, shots, self.monte_carlo.seed, Some(&tick))
-            .map_err(|e| failure(e, "shots"));
+        let d = request.run(&p, &n, Some(&tick));
         if let Some(b) = bar {
             b.finish_and_clear();
         }
-        result
-    }
-
-    fn run_in<T: Real>(&self, setup: Setup<T>) -> Result<String, Failure> {
-        let d = match self.threads {
-            Some(n) => rayon::ThreadPoolBuilder::new()
-                .num_threads(n)
-                .build()
-                .map_err(|e| InputError::new("threads", e.to_string()))?
-                .install(|| self.simulate(&setup))?,
-            None => self.simulate(&setup)?,
-        };
+        let d = d?;
         if let Some(path) = &self.svg {
             write_svg(path, &d, dispersion::draw)?;
         }
@@ -149,15 +139,6 @@ impl DispersionCmd {
         } else {
             Ok(table(&d, self.output.units))
         }
-    }
-
-    /// Runs the command; returns the text to print.
-    ///
-    /// # Errors
-    /// Bad options (status 2), failing to write the SVG (status 1).
-    pub fn run(&self) -> Result<String, Failure> {
-        let (p, n) = self.shot.resolve(self.output.units)?;
-        with_setup(&p, &n, |s| self.run_in(s), |s| self.run_in(s))
     }
 }
 

@@ -1,12 +1,11 @@
 //! `carry normalize`: a launch's carry in standard conditions, and back.
 
-use super::{failure, output};
+use super::output;
 use crate::cli::{BallArgs, IntegratorArgs, LaunchArgs, OutputArgs, PrecisionArgs, SceneArgs};
-use crate::compute::{self, Numerics, Precision};
-use crate::error::Failure;
-use crate::params::Params;
-use crate::units::{Quantity, Units};
-use carry_core::Real;
+use carry_io::compute::Numerics;
+use carry_io::error::Failure;
+use carry_io::params::Params;
+use carry_io::units::{Quantity, Units};
 use carry_lab::normalize::{self, Direction, Normalized};
 use clap::{Args, ValueEnum};
 use std::fmt::Write as _;
@@ -43,18 +42,6 @@ pub struct NormalizeCmd {
 }
 
 impl NormalizeCmd {
-    fn run_in<T: Real>(&self, p: &Params, n: &Numerics) -> Result<Normalized, Failure> {
-        let ball = compute::ball::<T>(p)?;
-        let (motion, _) = compute::launch_motion::<T>(p)?;
-        let scene = crate::scene::build::<T>(&p.scene)?;
-        let direction = match self.to {
-            To::Standard => Direction::ToStandard,
-            To::Conditions => Direction::ToConditions,
-        };
-        normalize::normalize(&ball, &motion, &scene, &n.integrator(), direction)
-            .map_err(|e| failure(e, "precision"))
-    }
-
     /// Runs the command; returns the text to print.
     ///
     /// # Errors
@@ -73,10 +60,11 @@ impl NormalizeCmd {
             ..Numerics::default()
         };
         n.check()?;
-        let r = match n.precision {
-            Precision::F32 => self.run_in::<f32>(&p, &n)?,
-            Precision::F64 => self.run_in::<f64>(&p, &n)?,
+        let to = match self.to {
+            To::Standard => carry_lab::request::To::Standard,
+            To::Conditions => carry_lab::request::To::Conditions,
         };
+        let r = carry_lab::request::normalize(&p, &n, to)?;
         if self.output.json {
             output::json(&r)
         } else if self.output.csv {

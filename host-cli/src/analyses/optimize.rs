@@ -1,14 +1,12 @@
 //! `carry optimize`: the delivery that maximises carry within bounds, or the optimizer chart.
 
 use super::dispersion::{MonteCarloArgs, NoiseArgs};
-use super::{ShotArgs, failure, output, parse_pair, parse_triple, with_setup, write_svg};
+use super::{ShotArgs, output, parse_pair, parse_triple, print_notes, write_svg};
 use crate::cli::OutputArgs;
-use crate::compute::IntegratorChoice;
-use crate::error::{Failure, InputError};
-use crate::units::{Quantity, Units};
-use carry_core::Real;
-use carry_lab::optimize::{self, Chart, ChartOptions, Objective, Optimum, Options, Range};
-use carry_lab::{Input, Setup};
+use carry_io::error::Failure;
+use carry_io::units::{Quantity, Units};
+use carry_lab::optimize::{self, Chart, Optimum};
+use carry_lab::request::{self, ChartGrid, OptimizeOutcome, OptimizeRequest};
 use clap::{Args, ValueEnum};
 use std::fmt::Write as _;
 use std::path::PathBuf;
@@ -80,112 +78,29 @@ pub struct OptimizeCmd {
     pub output: OutputArgs,
 }
 
-/// Shots per objective evaluation for `--objective dispersion` unless `--shots` says.
-const DISPERSION_OBJECTIVE_SHOTS: usize = 500;
-
-fn grid(
-    values: [f64; 3],
-    key: &'static str,
-    si: impl Fn(f64) -> f64,
-) -> Result<Vec<f64>, InputError> {
-    let [from, to, step] = values;
-    carry_lab::sweep::positions(from, to, step)
-        .map(|v| v.into_iter().map(si).collect())
-        .map_err(|_| InputError::new(key, "give from,to,step with from ≤ to and a positive step"))
-}
-
 impl OptimizeCmd {
-    fn options<T: Real>(&self, setup: &Setup<T>) -> Result<Options, Failure> {
-        let u = self.output.units;
+    /// The typed request of these options.
+    #[must_use]
+    pub fn request(&self) -> OptimizeRequest {
         let s = &self.search;
-        let loft = carry_core::real::to_f64(carry_core::units::to_deg(setup.club.loft_rad()));
-        let [a, b] = s
-            .dynamic_loft_range
-            .unwrap_or([(loft - 8.0).max(0.0), loft + 12.0]);
-        let loft_range =
-            Range::new(a, b, Input::DynamicLoftRange).map_err(|e| failure(e, "starts"))?;
-        let [a, b] = s.attack_angle_range.unwrap_or([-5.0, 5.0]);
-        let attack_range =
-            Range::new(a, b, Input::AttackAngleRange).map_err(|e| failure(e, "starts"))?;
-        let height = s
-            .impact_height_range
-            .map(|[a, b]| {
-                Range::new(
-                    u.to_si(Quantity::Offset, a),
-                    u.to_si(Quantity::Offset, b),
-                    Input::ImpactHeightRange,
-                )
-            })
-            .transpose()
-            .map_err(|e| failure(e, "starts"))?;
-        let objective = match s.objective {
-            ObjectiveChoice::Carry => Objective::Carry,
-            ObjectiveChoice::Total => Objective::Total,
-            ObjectiveChoice::Dispersion => Objective::Dispersion {
-                noise: self.noise.noise(u),
-                shots: self.monte_carlo.shots.unwrap_or(DISPERSION_OBJECTIVE_SHOTS),
-                seed: self.monte_carlo.seed,
+        OptimizeRequest {
+            units: self.output.units,
+            dynamic_loft_range: s.dynamic_loft_range,
+            attack_angle_range: s.attack_angle_range,
+            impact_height_range: s.impact_height_range,
+            objective: match s.objective {
+                ObjectiveChoice::Carry => request::ObjectiveChoice::Carry,
+                ObjectiveChoice::Total => request::ObjectiveChoice::Total,
+                ObjectiveChoice::Dispersion => request::ObjectiveChoice::Dispersion,
             },
-        };
-        Ok(Options {
-            dynamic_loft_deg: loft_range,
-            attack_angle_deg: attack_range,
-            impact_height_m: height,
-            objective,
             starts: s.starts,
+            chart: s.chart.then_some(ChartGrid {
+                club_speeds: s.club_speeds,
+                attack_angles: s.attack_angles,
+            }),
+            noise: self.noise.sd(),
+            shots: self.monte_carlo.shots,
             seed: self.monte_carlo.seed,
-            max_iterations: 400,
-        })
-    }
-
-    fn run_in<T: Real>(&self, setup: Setup<T>, smooth: bool) -> Result<String, Failure> {
-        let setup = if smooth { setup.smooth() } else { setup };
-        let options = self.options(&setup)?;
-        let u = self.output.units;
-        if self.search.chart {
-            let speeds = grid(
-                self.search.club_speeds.unwrap_or([35.0, 55.0, 5.0]),
-                "club_speeds",
-                |v| {
-                    if self.search.club_speeds.is_some() {
-                        u.to_si(Quantity::Speed, v)
-                    } else {
-                        v
-                    }
-                },
-            )?;
-            let attacks = grid(
-                self.search.attack_angles.unwrap_or([-4.0, 4.0, 2.0]),
-                "attack_angles",
-                |a| a,
-            )?;
-            let chart = optimize::chart(
-                &setup,
-                &ChartOptions {
-                    club_speeds_mps: speeds,
-                    attack_angles_deg: attacks,
-                    dynamic_loft_deg: options.dynamic_loft_deg,
-                },
-            )
-            .map_err(|e| failure(e, "starts"))?;
-            if let Some(path) = &self.search.svg {
-                write_svg(path, &chart, optimize::draw_chart)?;
-            }
-            return if self.output.json {
-                output::json(&chart)
-            } else if self.output.csv {
-                output::csv(&chart.cells)
-            } else {
-                Ok(chart_table(&chart, u))
-            };
-        }
-        let best = optimize::optimize(&setup, &options).map_err(|e| failure(e, "starts"))?;
-        if self.output.json {
-            output::json(&best)
-        } else if self.output.csv {
-            output::csv(&[Flat::of(&best)])
-        } else {
-            Ok(table(&best, u))
         }
     }
 
@@ -194,15 +109,34 @@ impl OptimizeCmd {
     /// # Errors
     /// Bad options (status 2), failing to write the SVG (status 1).
     pub fn run(&self) -> Result<String, Failure> {
-        let (p, n) = self.shot.resolve(self.output.units)?;
-        // A smooth objective unless the user chose the numerics.
-        let smooth = n.integrator == IntegratorChoice::Dp45 && n.tolerance.is_none();
-        with_setup(
-            &p,
-            &n,
-            |s| self.run_in(s, smooth),
-            |s| self.run_in(s, smooth),
-        )
+        let u = self.output.units;
+        let (p, n) = self.shot.resolve(u)?;
+        let mut notes = Vec::new();
+        let outcome = self.request().run(&p, &n, &mut notes);
+        print_notes(&notes);
+        match outcome? {
+            OptimizeOutcome::Chart(chart) => {
+                if let Some(path) = &self.search.svg {
+                    write_svg(path, &chart, optimize::draw_chart)?;
+                }
+                if self.output.json {
+                    output::json(&chart)
+                } else if self.output.csv {
+                    output::csv(&chart.cells)
+                } else {
+                    Ok(chart_table(&chart, u))
+                }
+            }
+            OptimizeOutcome::Optimum(best) => {
+                if self.output.json {
+                    output::json(&best)
+                } else if self.output.csv {
+                    output::csv(&[Flat::of(&best)])
+                } else {
+                    Ok(table(&best, u))
+                }
+            }
+        }
     }
 }
 
@@ -237,7 +171,7 @@ fn table(o: &Optimum, u: Units) -> String {
     let (carry, cu) = u.display(Quantity::Long, o.shot.carry_m);
     let (side, _) = u.display(Quantity::Long, o.shot.side_m);
     let (height, hu) = u.display(Quantity::Offset, o.point.impact_height_m);
-    let (speed, su) = u.display(Quantity::Speed, o.shot.ball_speed_mps);
+    let (speed, su) = u.display(Quantity::Speed, o.shot.launch.ball_speed_mps);
     let _ = writeln!(s, "optimum ({})", o.objective);
     let _ = writeln!(
         s,
@@ -252,8 +186,12 @@ fn table(o: &Optimum, u: Units) -> String {
     let _ = writeln!(s, "  impact height     {height:8.2} {hu}");
     let _ = writeln!(s, "launch");
     let _ = writeln!(s, "  ball speed        {speed:8.2} {su}");
-    let _ = writeln!(s, "  launch angle      {:8.2} deg", o.shot.launch_angle_deg);
-    let _ = writeln!(s, "  spin              {:8.0} rpm", o.shot.spin_rpm);
+    let _ = writeln!(
+        s,
+        "  launch angle      {:8.2} deg",
+        o.shot.launch.launch_angle_deg
+    );
+    let _ = writeln!(s, "  spin              {:8.0} rpm", o.shot.launch.spin_rpm);
     let _ = writeln!(s, "  carry             {carry:8.2} {cu}");
     let _ = writeln!(s, "  side              {side:8.2} {cu}");
     if o.objective == "dispersion" {
@@ -314,9 +252,9 @@ fn chart_table(c: &Chart, u: Units) -> String {
             u.to_display(Quantity::Speed, cell.club_speed_mps),
             cell.attack_angle_deg,
             cell.dynamic_loft_deg,
-            u.to_display(Quantity::Speed, cell.shot.ball_speed_mps),
-            cell.shot.launch_angle_deg,
-            cell.shot.spin_rpm,
+            u.to_display(Quantity::Speed, cell.shot.launch.ball_speed_mps),
+            cell.shot.launch.launch_angle_deg,
+            cell.shot.launch.spin_rpm,
             u.to_display(Quantity::Long, cell.shot.carry_m)
         );
     }

@@ -2,7 +2,7 @@
 //! joined with `_`, arrays indexed `_0`, `_1`, … or `_x`, `_y`, `_z` for three-vectors;
 //! columns in alphabetical order of the flattened keys).
 
-use crate::error::Failure;
+use carry_io::error::Failure;
 use serde::Serialize;
 use serde_json::Value;
 use std::fmt::Write as _;

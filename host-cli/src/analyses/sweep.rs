@@ -1,14 +1,11 @@
 //! `carry sweep`: a swing file against a range of ball positions.
 
-use super::{ShotArgs, failure, output, parse_triple, with_setup, write_svg};
+use super::{ShotArgs, output, parse_triple, print_notes, write_svg};
 use crate::cli::OutputArgs;
-use crate::error::{Failure, InputError};
-use crate::units::{Quantity, Units};
-use carry_core::Real;
-use carry_core::real::to_f64;
-use carry_lab::Setup;
-use carry_lab::sweep::generate::{EXAMPLE_COMMENT, SwingModel};
-use carry_lab::sweep::{self, Motion, Sweep};
+use carry_io::error::Failure;
+use carry_io::units::{Quantity, Units};
+use carry_lab::request::SweepRequest;
+use carry_lab::sweep::{self, Sweep};
 use clap::Args;
 use std::fmt::Write as _;
 use std::path::PathBuf;
@@ -41,42 +38,27 @@ pub struct SweepCmd {
     pub output: OutputArgs,
 }
 
-/// The example swing, compiled in so the command runs anywhere.
-const EXAMPLE: &str = include_str!("../../../lab/data/swing_driver.csv");
-
 impl SweepCmd {
-    fn run_in<T: Real>(&self, setup: Setup<T>) -> Result<String, Failure> {
+    /// Runs the command; returns the text to print.
+    ///
+    /// # Errors
+    /// Bad options or swing file (status 2), failing to write a file (status 1).
+    pub fn run(&self) -> Result<String, Failure> {
         let u = self.output.units;
+        let (p, n) = self.shot.resolve(u)?;
         if let Some(path) = &self.generate {
-            let motion = SwingModel::default()
-                .generate(
-                    &setup.club.face_rotation().map(to_f64),
-                    &setup.club.cg_to_face_m().map(to_f64),
-                    to_f64(setup.ball.radius_m()),
-                )
-                .map_err(|e| failure(e, "generate"))?;
-            std::fs::write(path, motion.to_csv(false, EXAMPLE_COMMENT))?;
+            SweepRequest::generate(&p, &n, path)?;
             return Ok(format!("wrote {}\n", path.display()));
         }
-        let loft = to_f64(setup.club.loft_rad());
-        let motion = match &self.swing {
-            Some(path) => {
-                let file = std::fs::File::open(path).map_err(|e| {
-                    InputError::new("swing", format!("cannot read {}: {e}", path.display()))
-                })?;
-                Motion::from_csv(std::io::BufReader::new(file), loft)
-            }
-            None => Motion::from_csv(EXAMPLE.as_bytes(), loft),
-        }
-        .map_err(|e| failure(e, "swing"))?;
-        let [from, to, step] = match self.ball_positions {
-            Some(v) => v.map(|x| u.to_si(Quantity::Offset, x)),
-            None => [-0.1, 0.1, 0.01],
+        let request = SweepRequest {
+            units: u,
+            swing: self.swing.clone(),
+            ball_positions: self.ball_positions,
         };
-        let positions =
-            sweep::positions(from, to, step).map_err(|e| failure(e, "ball_positions"))?;
-        let result =
-            sweep::sweep(&setup, &motion, &positions).map_err(|e| failure(e, "ball_positions"))?;
+        let mut notes = Vec::new();
+        let result = request.run(&p, &n, &mut notes);
+        print_notes(&notes);
+        let result = result?;
         if let Some(path) = &self.svg {
             write_svg(path, &result, sweep::draw)?;
         }
@@ -87,15 +69,6 @@ impl SweepCmd {
         } else {
             Ok(table(&result, u))
         }
-    }
-
-    /// Runs the command; returns the text to print.
-    ///
-    /// # Errors
-    /// Bad options or swing file (status 2), failing to write a file (status 1).
-    pub fn run(&self) -> Result<String, Failure> {
-        let (p, n) = self.shot.resolve(self.output.units)?;
-        with_setup(&p, &n, |s| self.run_in(s), |s| self.run_in(s))
     }
 }
 
@@ -137,10 +110,10 @@ fn table(r: &Sweep, u: Units) -> String {
                 let _ = write!(
                     s,
                     " {:>8.1} {:>7.2} {:>7.2} {:>7.0} {:>8.1} {:>7.1}",
-                    u.to_display(Quantity::Speed, shot.ball_speed_mps),
-                    shot.launch_angle_deg,
-                    shot.launch_direction_deg,
-                    shot.spin_rpm,
+                    u.to_display(Quantity::Speed, shot.launch.ball_speed_mps),
+                    shot.launch.launch_angle_deg,
+                    shot.launch.launch_direction_deg,
+                    shot.launch.spin_rpm,
                     u.to_display(Quantity::Long, shot.carry_m),
                     u.to_display(Quantity::Long, shot.side_m)
                 );

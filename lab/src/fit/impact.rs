@@ -17,9 +17,9 @@
 
 use carry_core::impact::{self, CompliantContact, ContactLaw, Solver};
 use carry_core::presets::FITTED_CONTACT;
+use carry_core::presets::TypicalDelivery;
 use carry_core::units::{deg, mph, to_deg, to_rpm};
-use carry_core::{Ball, ClubSpec, Delivery, DeliveryConvention, FaceLocation, Preset};
-use nalgebra::Vector3;
+use carry_core::{Ball, ClubSpec, DeliveryConvention, Preset};
 use std::fmt::Write as _;
 
 /// Quantities a delivery row observes, in order.
@@ -161,19 +161,14 @@ pub fn predict(row: &DeliveryRow, contact: ContactLaw<f64>) -> Result<[f64; 3], 
     .validate()
     .map_err(|e| e.to_string())?;
     let h = impact_height_m(row);
-    let delivery = Delivery {
+    // The row's delivery is a typical one (square, no lie, no club spin): the core's rule.
+    let delivery = TypicalDelivery {
         club_speed_mps: row.club_speed_mps,
-        attack_angle_rad: deg(row.attack_deg),
-        club_path_rad: 0.0,
-        face_angle_rad: 0.0,
-        dynamic_loft_rad: deg(row.dynamic_loft_deg),
-        lie_rad: 0.0,
-        club_spin_radps: Vector3::zeros(),
-        location: FaceLocation {
-            height_m: h,
-            toe_m: 0.0,
-        },
-    };
+        attack_angle_deg: row.attack_deg,
+        dynamic_loft_deg: row.dynamic_loft_deg,
+        impact_height_m: h,
+    }
+    .delivery::<f64>();
     let strike = delivery
         .strike_in(&club, DeliveryConvention::TrackMan)
         .map_err(|e| e.to_string())?;

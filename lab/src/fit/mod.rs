@@ -12,6 +12,8 @@ pub mod flight;
 pub mod impact;
 mod problem;
 mod report;
+pub mod request;
+pub mod request_contact;
 mod solve;
 
 pub use bounded::{to_bounded, to_unbounded};

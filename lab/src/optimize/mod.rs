@@ -2,7 +2,9 @@
 //! the user's bounds.
 //!
 //! **Variables**: dynamic loft and attack angle (degrees), optionally the impact height up
-//! the face (m); every other delivery field stays as given. **Method**: argmin's
+//! the face (m); every other delivery field stays as given. A variable whose range is one
+//! value (`lo == hi`, [`Range::fixed`]) is held there: it is not a dimension of the search
+//! and has no flatness entry. **Method**: argmin's
 //! Nelder–Mead simplex (Nelder & Mead 1965, *Comput. J.* 7, 308–313; the default
 //! coefficients α = 1, γ = 2, ρ = ½, σ = ½) on the box mapped to the unit cube `u ∈ [0,1]ⁿ`;
 //! the bounds are kept by evaluating the shot at the clamped point and adding a quadratic
@@ -59,6 +61,20 @@ impl Range {
             ));
         }
         Ok(Self { lo, hi })
+    }
+
+    /// The one-value range that holds a variable at `x` (not searched).
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] for a non-finite `x`.
+    pub fn fixed(x: f64, input: Input) -> Result<Self> {
+        Self::new(x, x, input)
+    }
+
+    /// Whether the range holds its variable at one value.
+    #[must_use]
+    pub fn is_fixed(&self) -> bool {
+        self.lo == self.hi
     }
 
     fn at(&self, u: f64) -> f64 {
@@ -206,6 +222,12 @@ pub fn optimize<T: Real>(setup: &Setup<T>, options: &Options) -> Result<Optimum>
     }
     let problem = Problem::new(setup, options)?;
     let space = problem.space();
+    if space.dimension() == 0 {
+        return Err(Error::invalid(
+            Input::DynamicLoftRange,
+            "every variable is held at one value: nothing to optimise",
+        ));
+    }
     let centre = vec![0.5; space.dimension()];
     // The centre must be a valid shot: otherwise the bounds (or the rest of the delivery)
     // are wrong, and the user should hear why rather than get a penalised nonsense point.

@@ -24,23 +24,30 @@ const RESTART_EDGE: f64 = 0.02;
 /// Convergence: standard deviation of the simplex's costs (m).
 const SD_TOLERANCE: f64 = 1.0e-10;
 
-/// The variables' bounds: dynamic loft (deg), attack angle (deg), impact height (m).
+/// The variables' bounds: dynamic loft (deg), attack angle (deg), impact height (m). A
+/// variable whose range is a single value (`lo == hi`) is fixed there and is not a
+/// dimension of the search.
 pub(super) struct Space {
     ranges: [Range; 3],
-    dimension: usize,
+    /// The free variables (indices into `ranges`), in order: the unit cube's axes.
+    free: Vec<usize>,
 }
 
 impl Space {
+    fn new(ranges: [Range; 3]) -> Self {
+        let free = (0..3).filter(|&i| ranges[i].lo < ranges[i].hi).collect();
+        Self { ranges, free }
+    }
+
     pub(super) fn dimension(&self) -> usize {
-        self.dimension
+        self.free.len()
     }
 
     /// User units at `u` (clamped into the box): `[loft_deg, attack_deg, height_m]`.
     pub(super) fn at(&self, u: &[f64]) -> [f64; 3] {
-        let mut x = [0.0; 3];
-        for (i, (xi, r)) in x.iter_mut().zip(&self.ranges).enumerate() {
-            let ui = u.get(i).copied().unwrap_or(0.5).clamp(0.0, 1.0);
-            *xi = r.at(ui);
+        let mut x = self.ranges.map(|r| r.lo);
+        for (&i, &ui) in self.free.iter().zip(u) {
+            x[i] = self.ranges[i].at(ui.clamp(0.0, 1.0));
         }
         x
     }
@@ -85,10 +92,7 @@ impl<'a, T: Real> Problem<'a, T> {
         });
         Ok(Self {
             setup,
-            space: Space {
-                ranges: [o.dynamic_loft_deg, o.attack_angle_deg, height],
-                dimension: if o.impact_height_m.is_some() { 3 } else { 2 },
-            },
+            space: Space::new([o.dynamic_loft_deg, o.attack_angle_deg, height]),
             objective: o.objective,
             evaluations: AtomicU64::new(0),
         })
@@ -215,8 +219,10 @@ impl<'a, T: Real> Problem<'a, T> {
         const NAMES: [&str; 3] = ["dynamic_loft_deg", "attack_angle_deg", "impact_height_m"];
         const STEPS: [f64; 3] = [1.0, 1.0, 0.001];
         let x = self.space.at(u);
-        (0..self.space.dimension)
-            .filter_map(|i| {
+        self.space
+            .free
+            .iter()
+            .filter_map(|&i| {
                 let (name, step) = (NAMES.get(i)?, STEPS.get(i)?);
                 let loss = |sign: f64| {
                     let mut y = x;

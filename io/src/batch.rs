@@ -62,78 +62,141 @@ pub fn applies(mode: Mode, key: Key) -> bool {
     }
 }
 
-/// The meaning of each input column.
 /// Whether the output has the ground's columns: the command line or the scene file names a
 /// ground, or the input has a ground column.
 fn ground_columns(job: &Job, cols: &Columns) -> bool {
-    !job.base.scene.ground.is_empty()
-        || cols.keys.iter().any(|(_, k)| {
-            matches!(
-                k,
-                Key::Ground
-                    | Key::Stimp
-                    | Key::GroundSlope
-                    | Key::GroundSlopeDirection
-                    | Key::GroundRestitution
-                    | Key::GroundFriction
-                    | Key::RollingResistance
-                    | Key::CraterScale
-            )
-        })
+    !job.base.scene.ground.is_empty() || cols.keys().any(Key::is_ground)
+}
+
+/// The output columns of one `carry batch` that the others read as inputs (the launch, in
+/// SI whatever `--units`): `carry batch impact --input d.csv | carry batch flight --input -`.
+/// `spin_rpm` and `spin_axis_deg` are read only without `backspin_rpm` and `sidespin_rpm`
+/// (the output has all four; the pairs exclude each other as inputs).
+pub const OUTPUT_INPUTS: &[(&str, Key)] = &[
+    ("ball_speed_mps", Key::BallSpeed),
+    ("launch_angle_deg", Key::LaunchAngle),
+    ("launch_direction_deg", Key::LaunchDirection),
+    ("backspin_rpm", Key::Backspin),
+    ("sidespin_rpm", Key::Sidespin),
+    ("spin_rpm", Key::Spin),
+    ("spin_axis_deg", Key::SpinAxis),
+];
+
+/// Whether `name` is a column some `carry batch` writes: `line`, `error`, or a result
+/// column of any mode.
+#[must_use]
+pub fn is_output_column(name: &str) -> bool {
+    name == "line"
+        || name == "error"
+        || [Mode::Impact, Mode::Shot]
+            .iter()
+            .any(|&m| report::csv_columns(m, true).contains(&name))
+}
+
+/// One input column: its index, its key, and whether its values are SI (an output
+/// column read back) rather than in `--units`.
+#[derive(Debug, Clone, Copy)]
+struct Input {
+    index: usize,
+    key: Key,
+    si: bool,
 }
 
 /// The meaning of each input column.
 #[derive(Debug, Clone)]
 pub struct Columns {
-    keys: Vec<(usize, Key)>,
+    keys: Vec<Input>,
     /// Index of the `label` column, if any.
     pub label: Option<usize>,
+    /// Index of an `error` column (a batch's output read back): a row with an error is an
+    /// error row again.
+    error: Option<usize>,
     width: usize,
 }
 
 impl Columns {
-    /// Maps a header to keys.
+    /// Maps a header to keys: option names in snake_case, and the output columns of the
+    /// other `carry batch` commands (those that are inputs of `mode` are read, in SI; the
+    /// rest are ignored).
     ///
     /// # Errors
     /// On `--input` for an unknown, duplicate or inapplicable column.
     pub fn from_header(header: &ByteRecord, mode: Mode) -> Result<Self, InputError> {
-        let mut keys = Vec::new();
+        let names: Vec<String> = header
+            .iter()
+            .map(|raw| {
+                let name = String::from_utf8_lossy(raw);
+                name.trim().trim_start_matches('\u{feff}').to_owned()
+            })
+            .collect();
+        let has = |n: &str| names.iter().any(|m| m == n);
+        let spin_pair = has("backspin_rpm") || has("sidespin_rpm");
+        let mut keys: Vec<Input> = Vec::new();
         let mut label = None;
-        for (i, raw) in header.iter().enumerate() {
-            let name = String::from_utf8_lossy(raw);
-            let name = name.trim().trim_start_matches('\u{feff}');
+        let mut error = None;
+        for (i, name) in names.iter().enumerate() {
+            let name = name.as_str();
             if name == "label" {
                 label = Some(i);
                 continue;
             }
-            let key = Key::find(name).ok_or_else(|| {
-                InputError::new("input", format!("line 1: unknown column '{name}' (columns are option names in snake_case, e.g. club_speed)"))
-            })?;
-            if !applies(mode, key) {
+            if name == "error" {
+                error = Some(i);
+                continue;
+            }
+            let (key, si) = if let Some(key) = Key::find(name) {
+                if !applies(mode, key) {
+                    return Err(InputError::new(
+                        "input",
+                        format!("line 1: column '{name}' is not an input of this command"),
+                    ));
+                }
+                (key, false)
+            } else if is_output_column(name) {
+                let alias = OUTPUT_INPUTS
+                    .iter()
+                    .find(|(n, _)| *n == name)
+                    .map(|(_, k)| *k);
+                match alias {
+                    Some(Key::Spin | Key::SpinAxis) if spin_pair => continue,
+                    Some(key) if applies(mode, key) => (key, true),
+                    // Another command's result: not an input here.
+                    _ => continue,
+                }
+            } else {
                 return Err(InputError::new(
                     "input",
-                    format!("line 1: column '{name}' is not an input of this command"),
+                    format!(
+                        "line 1: unknown column '{name}' (columns are option names in snake_case, e.g. club_speed, or another batch's output columns)"
+                    ),
                 ));
-            }
-            if keys.iter().any(|(_, k)| *k == key) {
+            };
+            if keys.iter().any(|c| c.key == key) {
                 return Err(InputError::new(
                     "input",
                     format!("line 1: column '{name}' appears twice"),
                 ));
             }
-            keys.push((i, key));
+            keys.push(Input { index: i, key, si });
         }
         Ok(Self {
             keys,
             label,
+            error,
             width: header.len(),
         })
+    }
+
+    /// The keys the columns set.
+    pub fn keys(&self) -> impl Iterator<Item = Key> + '_ {
+        self.keys.iter().map(|c| c.key)
     }
 
     /// The parameters of one row: `base` with the row's non-empty fields.
     ///
     /// # Errors
-    /// An [`InputError`] naming the column.
+    /// An [`InputError`] naming the column, or the row's own `error` (a failed row of the
+    /// batch whose output this is).
     pub fn apply(
         &self,
         rec: &ByteRecord,
@@ -150,15 +213,25 @@ impl Columns {
                 ),
             ));
         }
+        if let Some(e) = self.error.and_then(|i| rec.get(i)) {
+            let e = String::from_utf8_lossy(e);
+            if !e.trim().is_empty() {
+                return Err(InputError::new(
+                    "input",
+                    format!("the input row failed: {}", e.trim()),
+                ));
+            }
+        }
         let mut p = *base;
-        for &(i, key) in &self.keys {
-            let raw = rec.get(i).unwrap_or_default();
+        for c in &self.keys {
+            let raw = rec.get(c.index).unwrap_or_default();
             let text = std::str::from_utf8(raw)
-                .map_err(|_| InputError::new(key.name(), "is not UTF-8 text"))?;
+                .map_err(|_| InputError::new(c.key.name(), "is not UTF-8 text"))?;
             if text.trim().is_empty() {
                 continue;
             }
-            key.set(&mut p, units, key.parse(text)?);
+            let units = if c.si { Units::Si } else { units };
+            c.key.set(&mut p, units, c.key.parse(text)?);
         }
         Ok(p)
     }
@@ -248,7 +321,11 @@ fn process(
     failed
 }
 
-pub(crate) fn open(input: &PathBuf) -> Result<(Box<dyn Read>, Option<u64>), InputError> {
+/// Opens `input` (`-`: standard input), with its size when it is a file.
+///
+/// # Errors
+/// A file that cannot be opened, naming `input`.
+pub fn open(input: &PathBuf) -> Result<(Box<dyn Read>, Option<u64>), InputError> {
     if input.as_os_str() == "-" {
         return Ok((Box::new(std::io::stdin().lock()), None));
     }

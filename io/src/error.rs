@@ -3,15 +3,19 @@
 //! Every core [`carry_core::Error`] maps to an [`InputError`]: `InvalidInput { field, .. }`
 //! names the option of that field (`Field::ClubSpeed` → `--club-speed`); the physical
 //! failures name the options that cause them (an impact off the face → `--impact-height,
-//! --impact-toe`; no landing → `--landing-height`, …).
+//! --impact-toe`; no landing → `--landing-height`, …). The ranges a message quotes come from
+//! the core's constants (stimp, slope, turf coefficients, launch speed and spin).
 
+use carry_core::ground::MAX_SLOPE_RAD;
+use carry_core::ground::surface::{MAX_TURF_COEFFICIENT, STIMP_RANGE_M};
+use carry_core::units::M_PER_FOOT;
 use carry_core::{Error, Field};
 use std::fmt;
 
-/// Exit status for invalid input (also clap's usage-error status).
-pub const EXIT_INPUT: u8 = 2;
-/// Exit status for an I/O failure (writing output, reading a file that exists).
-pub const EXIT_IO: u8 = 1;
+/// A length (m) in whole feet, for a message (stimp readings are quoted in feet).
+fn feet(m: f64) -> f64 {
+    (m / M_PER_FOOT).round()
+}
 
 /// An invalid input: which option (snake_case key; several separated by `, `) and why.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -123,12 +127,22 @@ impl From<Error> for InputError {
         match e {
             Error::InvalidInput { field, reason } => {
                 let reason = match field {
+                    // TODO(i24core): the air's ranges (temperature, altitude) from the core's
+                    // constants once `carry_core::air` names them.
                     Field::Humidity => format!("{reason} (0 to 100 percent)"),
                     Field::Temperature => format!("{reason} (−100 to 100 °C)"),
                     Field::Altitude => format!("{reason} (−5000 to 11000 m)"),
                     Field::Restitution | Field::GroundRestitution => format!("{reason} (0 to 1)"),
-                    Field::Stimp => format!("{reason} (1 to 30 ft)"),
-                    Field::GroundNormal => format!("{reason} (0 to 45 degrees)"),
+                    Field::Stimp => {
+                        let (lo, hi) = STIMP_RANGE_M;
+                        format!("{reason} ({} to {} ft)", feet(lo), feet(hi))
+                    }
+                    Field::GroundNormal => {
+                        format!(
+                            "{reason} (0 to {} degrees)",
+                            MAX_SLOPE_RAD.to_degrees().round()
+                        )
+                    }
                     Field::BallVelocity | Field::BallSpeed => format!(
                         "{reason} (at most {} m/s at launch: the aerodynamics are incompressible)",
                         carry_core::flight::MAX_BALL_SPEED_MPS
@@ -138,7 +152,7 @@ impl From<Error> for InputError {
                         carry_core::flight::MAX_SPIN_RADPS * 60.0 / core::f64::consts::TAU
                     ),
                     Field::GroundFriction | Field::RollingResistance | Field::CraterScale => {
-                        format!("{reason} (0 to 10)")
+                        format!("{reason} (0 to {MAX_TURF_COEFFICIENT})")
                     }
                     Field::ContactLaw => {
                         "the full 15×15 solver supports only --contact rolling".to_owned()
@@ -198,6 +212,15 @@ impl From<Error> for InputError {
 mod tests {
     use super::*;
     use carry_core::Reason;
+
+    /// The ranges quoted from the core's constants read as they always did.
+    #[test]
+    fn ranges_come_from_the_core() {
+        let reason = |f| InputError::from(Error::invalid(f, Reason::OutOfRange)).reason;
+        assert!(reason(Field::Stimp).ends_with("(1 to 30 ft)"));
+        assert!(reason(Field::GroundNormal).ends_with("(0 to 45 degrees)"));
+        assert!(reason(Field::CraterScale).ends_with("(0 to 10)"));
+    }
 
     #[test]
     fn names_the_option() {

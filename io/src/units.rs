@@ -14,13 +14,13 @@
 //! parameters in kg, kg·m² and m, pressure in Pa and air density in kg/m³ in both systems.
 
 use carry_core::units::{M_PER_FOOT, M_PER_YARD, MPS_PER_MPH};
-use clap::ValueEnum;
 
 /// Metres per inch (exact).
 pub const M_PER_INCH: f64 = 0.0254;
 
 /// The unit system of input and display.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, ValueEnum)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
 pub enum Units {
     /// m/s, m, °C.
     #[default]

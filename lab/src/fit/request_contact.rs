@@ -8,11 +8,11 @@
 //! dynamic_loft_deg, ball_speed_mph, launch_deg, spin_rpm`; `who` labels the rows).
 //! `--evaluate compliant|FILE.toml` reports a given compliant law without fitting.
 
-use crate::error::{Failure, InputError};
-use crate::fit::FitCmd;
+use super::request::{FitRequest, Produced};
+use crate::fit::impact::{self, ContactProblem, PARAMETERS};
+use crate::fit::{self, Fit, FitOptions};
 use carry_core::units::MPS_PER_MPH;
-use carry_lab::fit::impact::{self, ContactProblem, PARAMETERS};
-use carry_lab::fit::{self, Fit, FitOptions};
+use carry_io::error::{Failure, InputError};
 use std::fmt::Write as _;
 use std::io::{IsTerminal as _, Read as _};
 
@@ -20,15 +20,15 @@ use std::io::{IsTerminal as _, Read as _};
 pub const FAMILY: &str = "compliant";
 
 /// Runs `carry fit --family compliant`: what it prints (table or JSON), as
-/// [`crate::fit::report`].
+/// [`super::request::report`] (or the document as a value).
 ///
 /// # Errors
 /// Bad input or a law that is not compliant (status 2); a fit that fails or a file that
 /// cannot be written.
-pub fn report(cmd: &FitCmd) -> Result<String, Failure> {
+pub(super) fn produce(cmd: &FitRequest, value: bool) -> Result<Produced, Failure> {
     let (problem, given) = match &cmd.evaluate {
         Some(name) => {
-            let law = crate::contact::parse(name).map_err(|e| InputError::new("evaluate", e))?;
+            let law = carry_io::contact::parse(name).map_err(|e| InputError::new("evaluate", e))?;
             let (problem, p) = ContactProblem::of(&law).ok_or_else(|| {
                 InputError::new(
                     "evaluate",
@@ -39,7 +39,7 @@ pub fn report(cmd: &FitCmd) -> Result<String, Failure> {
         }
         None => (ContactProblem::default(), None),
     };
-    let (mut source, _) = crate::batch::open(&cmd.input)?;
+    let (mut source, _) = carry_io::batch::open(&cmd.input)?;
     let mut text = String::new();
     source
         .read_to_string(&mut text)
@@ -98,6 +98,9 @@ pub fn report(cmd: &FitCmd) -> Result<String, Failure> {
             "coefficients": coefficients,
             "fit": result,
         });
+        if value {
+            return Ok(Produced::Value(doc));
+        }
         let mut s =
             serde_json::to_string_pretty(&doc).map_err(|e| Failure::Other(e.to_string()))?;
         s.push('\n');
@@ -105,17 +108,17 @@ pub fn report(cmd: &FitCmd) -> Result<String, Failure> {
     } else {
         table(&result, problem.friction, cmd)
     };
-    Ok(text)
+    Ok(Produced::Text(text))
 }
 
 /// The readable report (ball speed in mph, angles in degrees, spin in rpm).
-fn table(f: &Fit, friction: f64, cmd: &FitCmd) -> String {
+fn table(f: &Fit, friction: f64, cmd: &FitRequest) -> String {
     let mut s = String::new();
     let _ = writeln!(
         s,
         "FIT  family {FAMILY}, {} rows, {} ({} impacts)",
         f.rows.len(),
-        crate::fit::status(f, cmd.evaluate.is_some()),
+        super::request::status(f, cmd.evaluate.is_some()),
         f.row_evaluations
     );
     let _ = writeln!(s, "\nCOEFFICIENTS");

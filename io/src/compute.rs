@@ -3,7 +3,7 @@
 
 use crate::error::InputError;
 use crate::params::{ClubParams, DEFAULT_BACKSPIN_RPM, Params};
-use crate::report::{ClubAfter, FlightReport, GroundReport, LaunchReport, Report};
+use crate::report::{ClubAfter, FlightReport, GroundReport, LaunchFigures, LaunchReport, Report};
 use carry_core::flight::{Integrator, Recorder, Sample};
 use carry_core::impact::{self, Solver};
 use carry_core::real::{lit, to_f64};
@@ -12,11 +12,12 @@ use carry_core::{
     Ball, BallMotion, ClubHead, ClubSpec, Delivery, FaceLocation, FlightOutcome, Launch,
     LaunchMetrics, PreparedScene, Real, RunEnd,
 };
-use clap::ValueEnum;
+
 use nalgebra::{Matrix3, Vector3};
 
 /// Floating-point precision of the computation.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, ValueEnum)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
 pub enum Precision {
     /// Single precision (what a launch-monitor MCU runs).
     F32,
@@ -26,7 +27,8 @@ pub enum Precision {
 }
 
 /// Impact solver.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, ValueEnum)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
 pub enum SolverChoice {
     /// The exact 3×3 collision-matrix form.
     #[default]
@@ -36,7 +38,8 @@ pub enum SolverChoice {
 }
 
 /// Flight integrator.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, ValueEnum)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
 pub enum IntegratorChoice {
     /// Explicit Euler, fixed step.
     Euler,
@@ -285,13 +288,7 @@ fn launch_report<T: Real>(
     smash: bool,
 ) -> LaunchReport {
     LaunchReport {
-        ball_speed_mps: to_f64(m.ball_speed_mps),
-        launch_angle_deg: to_f64(to_deg(m.launch_angle_rad)),
-        launch_direction_deg: to_f64(to_deg(m.launch_direction_rad)),
-        spin_rpm: to_f64(to_rpm(m.spin_radps)),
-        backspin_rpm: to_f64(to_rpm(m.backspin_radps)),
-        sidespin_rpm: to_f64(to_rpm(m.sidespin_radps)),
-        spin_axis_deg: to_f64(to_deg(m.spin_axis_rad)),
+        figures: LaunchFigures::of(m),
         smash_factor: smash.then(|| to_f64(m.smash_factor)),
         ball_velocity_mps: f3(&motion.velocity_mps),
         ball_spin_radps: f3(&motion.spin_radps),
@@ -336,13 +333,15 @@ pub fn launch_motion<T: Real>(p: &Params) -> Result<(BallMotion<T>, LaunchReport
     let back = to_f64(to_rpm(launch.backspin_radps));
     let side = to_f64(to_rpm(launch.sidespin_radps));
     let report = LaunchReport {
-        ball_speed_mps: to_f64(launch.ball_speed_mps),
-        launch_angle_deg: to_f64(to_deg(launch.launch_angle_rad)),
-        launch_direction_deg: to_f64(to_deg(launch.launch_direction_rad)),
-        spin_rpm: to_f64(to_rpm(motion.spin_radps.norm())),
-        backspin_rpm: back,
-        sidespin_rpm: side,
-        spin_axis_deg: side.atan2(back).to_degrees(),
+        figures: LaunchFigures {
+            ball_speed_mps: to_f64(launch.ball_speed_mps),
+            launch_angle_deg: to_f64(to_deg(launch.launch_angle_rad)),
+            launch_direction_deg: to_f64(to_deg(launch.launch_direction_rad)),
+            spin_rpm: to_f64(to_rpm(motion.spin_radps.norm())),
+            backspin_rpm: back,
+            sidespin_rpm: side,
+            spin_axis_deg: side.atan2(back).to_degrees(),
+        },
         smash_factor: None,
         ball_velocity_mps: f3(&motion.velocity_mps),
         ball_spin_radps: f3(&motion.spin_radps),

@@ -355,6 +355,23 @@ pub enum Value {
 }
 
 impl Key {
+    /// Whether this key is one of the ground's (a run with it has the ground's output
+    /// columns: `total_m`, `roll_m`, …).
+    #[must_use]
+    pub fn is_ground(self) -> bool {
+        matches!(
+            self,
+            Self::Ground
+                | Self::Stimp
+                | Self::GroundSlope
+                | Self::GroundSlopeDirection
+                | Self::GroundRestitution
+                | Self::GroundFriction
+                | Self::RollingResistance
+                | Self::CraterScale
+        )
+    }
+
     /// Looks a key up by its snake_case (or kebab-case) name.
     #[must_use]
     pub fn find(name: &str) -> Option<Self> {
@@ -381,7 +398,7 @@ impl Key {
             Kind::Tensor => parse_tensor(text).map(Value::Tensor).map_err(err),
             Kind::Preset => parse_preset(text).map(Value::Preset).map_err(err),
             Kind::Contact => crate::contact::parse(text).map(Value::Contact).map_err(err),
-            Kind::Aero => carry_lab::aero_file::resolve(text.trim())
+            Kind::Aero => crate::aero_file::resolve(text.trim())
                 .map(Value::Aero)
                 .map_err(err),
             Kind::Bool => parse_bool(text).map(Value::Bool).map_err(err),
@@ -502,6 +519,39 @@ pub fn parse_finite(text: &str) -> Result<f64, String> {
         Ok(x)
     } else {
         Err(format!("'{t}' is not a finite number"))
+    }
+}
+
+/// Parses `a,b` (two finite numbers).
+///
+/// # Errors
+/// The reason, for a message.
+pub fn parse_pair(text: &str) -> Result<[f64; 2], String> {
+    let v: Vec<f64> = text
+        .split(',')
+        .map(parse_finite)
+        .collect::<Result<_, _>>()?;
+    match v.as_slice() {
+        &[a, b] => Ok([a, b]),
+        _ => Err(format!("'{}' must be two numbers: low,high", text.trim())),
+    }
+}
+
+/// Parses `from,to,step` (three finite numbers).
+///
+/// # Errors
+/// The reason, for a message.
+pub fn parse_triple(text: &str) -> Result<[f64; 3], String> {
+    let v: Vec<f64> = text
+        .split(',')
+        .map(parse_finite)
+        .collect::<Result<_, _>>()?;
+    match v.as_slice() {
+        &[a, b, c] => Ok([a, b, c]),
+        _ => Err(format!(
+            "'{}' must be three numbers: from,to,step",
+            text.trim()
+        )),
     }
 }
 

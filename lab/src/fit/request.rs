@@ -1,0 +1,730 @@
+//! A fit request (`carry fit`, the Python package's `carry.fit`): fits a model family's
+//! coefficients to measured shots (the fitting itself is [`crate::fit`]); this module reads
+//! the CSV in the CLI's names and units, shows progress, and reports the coefficients, the
+//! per-row residuals, the summaries and the leave-one-out errors (a table or the JSON
+//! document), or writes the fitted model as TOML.
+//!
+//! Input columns (header names, case-insensitive; `-` and `_` alike):
+//! * launch: `ball_speed`, `launch_angle` (or `launch`), `launch_direction`, and
+//!   `backspin` + `sidespin` or `spin` + `spin_axis`;
+//! * observed: `carry` (required), `apex` (or `max_height`), `land_angle` (or `land`),
+//!   `flight_time`, `side`;
+//! * conditions per row (override the options): `temperature`, `humidity` (%),
+//!   `pressure` (Pa) or `altitude`, `air_density`;
+//! * `label`, `weight` (default 1).
+//!
+//! Values are in `--units`, unless the column name ends in a unit: `_mph`, `_mps`, `_yd`,
+//! `_ft`, `_m`, `_deg`, `_rpm`, `_s`, `_c`, `_f`, `_pa`, `_pct` (so TrackMan's
+//! `ball_speed_mph, launch_deg, spin_rpm, max_height_yd, land_deg, carry_yd` read as they
+//! are). Without a `label` column, the text of `tour`, `who`, `club` and `source` columns
+//! labels the rows. Other columns are ignored and listed.
+
+use crate::fit::flight::{AeroFamily, AeroProblem, ShotRow};
+use crate::fit::{self, Fit, FitOptions};
+use carry_core::Launch;
+use carry_core::units::{M_PER_FOOT, M_PER_YARD, MPS_PER_MPH, deg, rpm};
+use carry_io::error::{Failure, InputError};
+use carry_io::params::SceneParams;
+use carry_io::units::{Quantity, Units};
+use serde::Serialize;
+use std::fmt::Write as _;
+use std::io::IsTerminal as _;
+use std::path::PathBuf;
+
+/// A fit of measured shots (`carry fit`, `carry.fit`): the files, the family and the
+/// conditions of rows without their own.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct FitRequest {
+    /// Measured shots (CSV; `-` for standard input). The columns: this module's doc.
+    pub input: PathBuf,
+    /// More measured shots, fitted jointly with --input (repeatable; the same columns
+    /// rules, each file its own header; not with `--family compliant`).
+    pub also: Vec<PathBuf>,
+    /// Model family to fit: `modern` (drag crisis, a lift of two saturating components,
+    /// Smits & Smith spin decay; 9 coefficients) or `quintavalla` (the seed's linear family, 5 coefficients);
+    /// `compliant`: the face–ball contact law on delivery → launch rows (club,
+    /// club_speed_mph, attack_deg, dynamic_loft_deg, ball_speed_mph, launch_deg, spin_rpm,
+    /// as ../shared/data/club_delivery.csv; writes a `--contact` file).
+    pub family: String,
+    /// Write the fitted model here (TOML; use it with `--aero FILE.toml`).
+    pub output: Option<PathBuf>,
+    /// Do not fit: report how this model (`tour2023`, `quintavalla` or a model file) does
+    /// on the input (its family replaces --family).
+    pub evaluate: Option<String>,
+    /// Skip the leave-one-out cross-validation (one refit per row).
+    pub no_cross_validation: bool,
+    /// Input and display units (JSON stays SI).
+    pub units: Units,
+    /// The JSON document (SI) rather than the table.
+    pub json: bool,
+    /// No progress bar.
+    pub no_progress: bool,
+    /// Air density of rows without conditions [kg/m³] (default 1.225). Excludes weather.
+    pub air_density: Option<f64>,
+    /// Temperature of rows without conditions [°C | °F] (weather; default 15 °C).
+    pub temperature: Option<f64>,
+    /// Relative humidity of rows without conditions [%] (weather; default 0).
+    pub humidity: Option<f64>,
+    /// Station pressure of rows without conditions [Pa] (weather). Excludes --altitude.
+    pub pressure: Option<f64>,
+    /// Altitude of rows without conditions [m | ft] (weather).
+    pub altitude: Option<f64>,
+}
+
+/// The air-condition options of a row or of the command line (the scene options' air
+/// fields: density, temperature, humidity, pressure, altitude; SI, humidity in percent).
+pub type Conditions = SceneParams;
+
+/// Whether `c` names any air condition.
+fn any_condition(c: &Conditions) -> bool {
+    c.air_density_kgm3.is_some()
+        || c.temperature_c.is_some()
+        || c.humidity_pct.is_some()
+        || c.pressure_pa.is_some()
+        || c.altitude_m.is_some()
+}
+
+/// What a column holds.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Field {
+    BallSpeed,
+    LaunchAngle,
+    LaunchDirection,
+    Backspin,
+    Sidespin,
+    Spin,
+    SpinAxis,
+    Carry,
+    Apex,
+    LandAngle,
+    FlightTime,
+    Side,
+    Temperature,
+    Humidity,
+    Pressure,
+    Altitude,
+    AirDensity,
+    Weight,
+}
+
+const NAMES: &[(&str, Field)] = &[
+    ("ball_speed", Field::BallSpeed),
+    ("launch_angle", Field::LaunchAngle),
+    ("launch", Field::LaunchAngle),
+    ("launch_direction", Field::LaunchDirection),
+    ("backspin", Field::Backspin),
+    ("sidespin", Field::Sidespin),
+    ("spin", Field::Spin),
+    ("spin_axis", Field::SpinAxis),
+    ("carry", Field::Carry),
+    ("apex", Field::Apex),
+    ("max_height", Field::Apex),
+    ("land_angle", Field::LandAngle),
+    ("land", Field::LandAngle),
+    ("flight_time", Field::FlightTime),
+    ("side", Field::Side),
+    ("temperature", Field::Temperature),
+    ("humidity", Field::Humidity),
+    ("pressure", Field::Pressure),
+    ("altitude", Field::Altitude),
+    ("air_density", Field::AirDensity),
+    ("weight", Field::Weight),
+];
+
+/// Label-source columns when there is no `label`.
+const LABEL_PARTS: [&str; 4] = ["tour", "who", "club", "source"];
+
+/// A conversion of a column's values to SI.
+type ToSi = fn(f64) -> f64;
+
+/// A unit a column name may end in: how to turn its values into SI.
+fn suffix_unit(name: &str) -> Option<(&str, ToSi)> {
+    const SUFFIXES: &[(&str, ToSi)] = &[
+        ("_mph", |x| x * MPS_PER_MPH),
+        ("_mps", |x| x),
+        ("_yd", |x| x * M_PER_YARD),
+        ("_ft", |x| x * M_PER_FOOT),
+        ("_m", |x| x),
+        ("_deg", |x| x),
+        ("_rpm", |x| x),
+        ("_s", |x| x),
+        ("_c", |x| x),
+        ("_f", |x| (x - 32.0) * (5.0 / 9.0)),
+        ("_pa", |x| x),
+        ("_pct", |x| x),
+    ];
+    SUFFIXES
+        .iter()
+        .find_map(|&(s, f)| name.strip_suffix(s).map(|base| (base, f)))
+}
+
+fn quantity(f: Field) -> Quantity {
+    match f {
+        Field::BallSpeed => Quantity::Speed,
+        Field::Carry | Field::Side => Quantity::Long,
+        Field::Apex | Field::Altitude => Quantity::Height,
+        Field::Temperature => Quantity::Temperature,
+        _ => Quantity::Plain,
+    }
+}
+
+/// A column: its index, field and conversion.
+struct Column {
+    index: usize,
+    field: Field,
+    to_si: Box<dyn Fn(f64) -> f64>,
+}
+
+/// The rows of a fit input and the names of the columns it ignored.
+///
+/// # Errors
+/// An unreadable file, no header, no `carry` column, or a bad value (naming the line and
+/// the column).
+pub fn read_rows(
+    input: &PathBuf,
+    units: Units,
+    global: &Conditions,
+) -> Result<(Vec<ShotRow>, Vec<String>), InputError> {
+    let (source, _) = carry_io::batch::open(input)?;
+    let name = input.display().to_string();
+    let mut rdr = csv::ReaderBuilder::new()
+        .has_headers(true)
+        .flexible(true)
+        .trim(csv::Trim::All)
+        .comment(Some(b'#'))
+        .from_reader(source);
+    let header = rdr
+        .headers()
+        .map_err(|e| InputError::new("input", format!("{name}: cannot read the header: {e}")))?
+        .clone();
+    let mut columns = Vec::new();
+    let (mut label, mut label_parts, mut ignored) = (None, Vec::new(), Vec::new());
+    for (i, h) in header.iter().enumerate() {
+        let h = h.to_ascii_lowercase().replace('-', "_");
+        if h == "label" {
+            label = Some(i);
+            continue;
+        }
+        let known = |n: &str| NAMES.iter().find(|(k, _)| *k == n).map(|&(_, f)| f);
+        let column = if let Some(f) = known(&h) {
+            let q = quantity(f);
+            Some((
+                f,
+                Box::new(move |x| units.to_si(q, x)) as Box<dyn Fn(f64) -> f64>,
+            ))
+        } else if let Some((base, conv)) = suffix_unit(&h) {
+            known(base).map(|f| (f, Box::new(conv) as Box<dyn Fn(f64) -> f64>))
+        } else {
+            None
+        };
+        match column {
+            Some((field, to_si)) => {
+                if columns.iter().any(|c: &Column| c.field == field) {
+                    return Err(InputError::new(
+                        "input",
+                        format!("{name}: column '{h}' repeats another column's quantity"),
+                    ));
+                }
+                columns.push(Column {
+                    index: i,
+                    field,
+                    to_si,
+                });
+            }
+            None if LABEL_PARTS.contains(&h.as_str()) => label_parts.push(i),
+            None => ignored.push(h),
+        }
+    }
+    let has = |f: Field| columns.iter().any(|c| c.field == f);
+    for (need, what) in [
+        (Field::Carry, "carry"),
+        (Field::BallSpeed, "ball_speed"),
+        (Field::LaunchAngle, "launch_angle"),
+    ] {
+        if !has(need) {
+            return Err(InputError::new(
+                "input",
+                format!("{name}: no '{what}' column"),
+            ));
+        }
+    }
+    if !(has(Field::Backspin) || has(Field::Spin)) {
+        return Err(InputError::new(
+            "input",
+            format!("{name}: no 'backspin' or 'spin' column"),
+        ));
+    }
+    let mut rows = Vec::new();
+    for (n, record) in rdr.records().enumerate() {
+        let line = n + 2;
+        let record = record.map_err(|e| InputError::new("input", format!("line {line}: {e}")))?;
+        let mut v: Vec<(Field, f64)> = Vec::new();
+        for c in &columns {
+            let text = record.get(c.index).unwrap_or("").trim();
+            if text.is_empty() {
+                continue;
+            }
+            let col = header.get(c.index).unwrap_or("?");
+            let x: f64 = text.parse().map_err(|_| {
+                InputError::new(
+                    "input",
+                    format!("line {line}: {col}: '{text}' is not a number"),
+                )
+            })?;
+            if !x.is_finite() {
+                return Err(InputError::new(
+                    "input",
+                    format!("line {line}: {col}: '{text}' is not a finite number"),
+                ));
+            }
+            v.push((c.field, (c.to_si)(x)));
+        }
+        let get = |f: Field| v.iter().find(|(g, _)| *g == f).map(|&(_, x)| x);
+        let missing =
+            |what: &str| InputError::new("input", format!("line {line}: {what}: missing value"));
+        let (backspin, sidespin) = match (get(Field::Backspin), get(Field::Spin)) {
+            (Some(b), _) => (b, get(Field::Sidespin).unwrap_or(0.0)),
+            (None, Some(s)) => {
+                let axis = get(Field::SpinAxis).unwrap_or(0.0).to_radians();
+                (s * axis.cos(), s * axis.sin())
+            }
+            (None, None) => return Err(missing("backspin")),
+        };
+        let row = Conditions {
+            air_density_kgm3: get(Field::AirDensity),
+            temperature_c: get(Field::Temperature),
+            humidity_pct: get(Field::Humidity),
+            pressure_pa: get(Field::Pressure),
+            altitude_m: get(Field::Altitude),
+            ..Conditions::default()
+        };
+        let conditions = if any_condition(&row) { row } else { *global };
+        let air = carry_io::scene::air(&conditions).map_err(|e| {
+            InputError::new("input", format!("line {line}: {}: {}", e.key, e.reason))
+        })?;
+        let weight = get(Field::Weight).unwrap_or(1.0);
+        if !(weight > 0.0) {
+            return Err(InputError::new(
+                "input",
+                format!("line {line}: weight: must be positive"),
+            ));
+        }
+        let text = |i: usize| record.get(i).unwrap_or("").to_string();
+        let label = label.map(text).unwrap_or_else(|| {
+            let parts: Vec<String> = label_parts.iter().map(|&i| text(i)).collect();
+            if parts.is_empty() {
+                format!("line {line}")
+            } else {
+                parts.join(" ")
+            }
+        });
+        rows.push(ShotRow {
+            label,
+            launch: Launch {
+                ball_speed_mps: get(Field::BallSpeed).ok_or_else(|| missing("ball_speed"))?,
+                launch_angle_rad: deg(
+                    get(Field::LaunchAngle).ok_or_else(|| missing("launch_angle"))?
+                ),
+                launch_direction_rad: deg(get(Field::LaunchDirection).unwrap_or(0.0)),
+                backspin_radps: rpm(backspin),
+                sidespin_radps: rpm(sidespin),
+            },
+            air,
+            carry_m: get(Field::Carry).ok_or_else(|| missing("carry"))?,
+            apex_m: get(Field::Apex),
+            land_angle_deg: get(Field::LandAngle),
+            flight_time_s: get(Field::FlightTime),
+            side_m: get(Field::Side),
+            weight,
+        });
+    }
+    if rows.is_empty() {
+        return Err(InputError::new("input", format!("{name}: no rows")));
+    }
+    Ok((rows, ignored))
+}
+
+/// The JSON document of a fit (SI).
+#[derive(Serialize)]
+struct Report<'a> {
+    family: &'a str,
+    rows: usize,
+    ignored_columns: &'a [String],
+    coefficients: serde_json::Map<String, serde_json::Value>,
+    fit: &'a Fit,
+}
+
+impl FitRequest {
+    fn conditions(&self) -> Conditions {
+        let u = self.units;
+        Conditions {
+            air_density_kgm3: self.air_density,
+            temperature_c: self.temperature.map(|t| u.to_si(Quantity::Temperature, t)),
+            humidity_pct: self.humidity,
+            pressure_pa: self.pressure,
+            altitude_m: self.altitude.map(|h| u.to_si(Quantity::Height, h)),
+            ..Conditions::default()
+        }
+    }
+}
+
+/// What a fit produces: text (the table, or the JSON document as text) or the JSON
+/// document as a value.
+pub(super) enum Produced {
+    /// The table, or the pretty JSON text.
+    Text(String),
+    /// The JSON document.
+    Value(serde_json::Value),
+}
+
+impl FitRequest {
+    /// Checks the options that exclude each other (the CLI's grammar says the same with
+    /// its usage errors): the air density or the weather, the pressure or the altitude,
+    /// `output` or `evaluate`.
+    ///
+    /// # Errors
+    /// An [`InputError`] naming the first option at fault.
+    pub fn check(&self) -> Result<(), InputError> {
+        if self.air_density.is_some()
+            && (self.temperature.is_some()
+                || self.humidity.is_some()
+                || self.pressure.is_some()
+                || self.altitude.is_some())
+        {
+            return Err(InputError::new(
+                "air_density",
+                "give either the air density or the weather, not both",
+            ));
+        }
+        if self.pressure.is_some() && self.altitude.is_some() {
+            return Err(InputError::new(
+                "pressure",
+                "give either the pressure or the altitude, not both",
+            ));
+        }
+        if self.output.is_some() && self.evaluate.is_some() {
+            return Err(InputError::new("output", "cannot be used with evaluate"));
+        }
+        Ok(())
+    }
+}
+
+/// Fits (or evaluates) as `cmd` asks, writes `--output` if given, and returns what
+/// `carry fit` prints: the table, or the JSON document as text with `--json`.
+///
+/// # Errors
+/// Bad input (status 2); a fit that cannot start or a file that cannot be written.
+pub fn report(cmd: &FitRequest) -> Result<String, Failure> {
+    match produce(cmd, false)? {
+        Produced::Text(t) => Ok(t),
+        Produced::Value(v) => Ok(v.to_string()),
+    }
+}
+
+/// As [`report`] with `json`, the document as a value (the Python package's `carry.fit`),
+/// after [`FitRequest::check`].
+///
+/// # Errors
+/// As [`report`].
+pub fn document(cmd: &FitRequest) -> Result<serde_json::Value, Failure> {
+    cmd.check()?;
+    let cmd = FitRequest {
+        json: true,
+        no_progress: true,
+        ..cmd.clone()
+    };
+    match produce(&cmd, true)? {
+        Produced::Value(v) => Ok(v),
+        Produced::Text(t) => Err(Failure::Other(format!("not a document: {t}"))),
+    }
+}
+
+fn produce(cmd: &FitRequest, value: bool) -> Result<Produced, Failure> {
+    if cmd.family == super::request_contact::FAMILY {
+        if !cmd.also.is_empty() {
+            return Err(InputError::new(
+                "also",
+                "the compliant family reads one --input file".to_string(),
+            )
+            .into());
+        }
+        return super::request_contact::produce(cmd, value);
+    }
+    let evaluate = match &cmd.evaluate {
+        Some(name) => {
+            Some(carry_io::aero_file::resolve(name).map_err(|e| InputError::new("evaluate", e))?)
+        }
+        None => None,
+    };
+    let family = match &evaluate {
+        Some(m) => Some(AeroFamily::of(m)),
+        None => AeroFamily::named(&cmd.family),
+    };
+    let family = family.ok_or_else(|| {
+        let names: Vec<&str> = AeroFamily::ALL.iter().map(|(n, _)| *n).collect();
+        InputError::new(
+            "family",
+            format!(
+                "unknown family '{}' (families: {})",
+                cmd.family,
+                names.join(", ")
+            ),
+        )
+    })?;
+    let global = cmd.conditions();
+    carry_io::scene::air::<f64>(&global)?;
+    let (mut rows, mut ignored) = read_rows(&cmd.input, cmd.units, &global)?;
+    for more in &cmd.also {
+        let (r, i) = read_rows(more, cmd.units, &global)?;
+        rows.extend(r);
+        ignored.extend(
+            i.into_iter()
+                .filter(|c| !ignored.contains(c))
+                .collect::<Vec<_>>(),
+        );
+    }
+    let problem = AeroProblem::new(family);
+    let options = FitOptions {
+        leave_one_out: !cmd.no_cross_validation,
+    };
+    let solves = 1 + if options.leave_one_out { rows.len() } else { 0 };
+    let bar = (!cmd.no_progress && std::io::stderr().is_terminal()).then(|| {
+        let bar = indicatif::ProgressBar::new(solves as u64);
+        bar.set_style(
+            indicatif::ProgressStyle::with_template(
+                "fitting {bar:40} {pos}/{len} solves, eta {eta}",
+            )
+            .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+        );
+        bar
+    });
+    let tick = || {
+        if let Some(b) = &bar {
+            b.inc(1);
+        }
+    };
+    let result = match evaluate.as_ref().and_then(|m| family.parameters(m)) {
+        Some(p) => fit::evaluate(&problem, &rows, &p),
+        None => fit::fit(&problem, &rows, options, &tick),
+    }
+    .map_err(|e| Failure::Other(format!("the fit failed: {e}")))?;
+    if let Some(b) = &bar {
+        b.finish_and_clear();
+    }
+    let model = family.model(&result.values());
+    if let Some(path) = &cmd.output {
+        let summary = result.summary_of("carry").copied().unwrap_or_default();
+        let comment = format!(
+            "carry aerodynamic model (family {}), fitted by `carry fit` to {} rows of {}\n\
+             carry mean |error| {:.2} %, max {:.2} %{}",
+            family_name(family),
+            rows.len(),
+            inputs(cmd),
+            summary.mean_abs_pct,
+            summary.max_abs_pct,
+            result
+                .loo_summary_of("carry")
+                .map(|l| format!("; leave-one-out mean {:.2} %", l.mean_abs_pct))
+                .unwrap_or_default(),
+        );
+        std::fs::write(path, carry_io::aero_file::to_toml(&model, &comment))
+            .map_err(|e| Failure::Other(format!("cannot write {}: {e}", path.display())))?;
+    }
+    let text = if cmd.json {
+        let coefficients = carry_io::aero_file::coefficients(&model)
+            .into_iter()
+            .map(|(k, v)| (k.to_string(), serde_json::json!(v)))
+            .collect();
+        let report = Report {
+            family: family_name(family),
+            rows: rows.len(),
+            ignored_columns: &ignored,
+            coefficients,
+            fit: &result,
+        };
+        if value {
+            return serde_json::to_value(&report)
+                .map(Produced::Value)
+                .map_err(|e| Failure::Other(e.to_string()));
+        }
+        let mut s =
+            serde_json::to_string_pretty(&report).map_err(|e| Failure::Other(e.to_string()))?;
+        s.push('\n');
+        s
+    } else {
+        table(family, &result, &ignored, cmd)
+    };
+    Ok(Produced::Text(text))
+}
+
+/// The input files, joined with `and`.
+fn inputs(cmd: &FitRequest) -> String {
+    core::iter::once(&cmd.input)
+        .chain(&cmd.also)
+        .map(|p| p.display().to_string())
+        .collect::<Vec<_>>()
+        .join(" and ")
+}
+
+fn family_name(f: AeroFamily) -> &'static str {
+    AeroFamily::ALL
+        .iter()
+        .find(|(_, g)| *g == f)
+        .map_or("?", |(n, _)| n)
+}
+
+/// How a fit ended, for the report's first line.
+pub(super) fn status(f: &Fit, evaluated: bool) -> &'static str {
+    if evaluated {
+        "evaluated, not fitted"
+    } else if f.converged {
+        "converged"
+    } else {
+        "NOT converged"
+    }
+}
+
+/// The readable report.
+fn table(family: AeroFamily, f: &Fit, ignored: &[String], cmd: &FitRequest) -> String {
+    let u = cmd.units;
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "FIT  family {}, {} rows, {} ({} flights)",
+        family_name(family),
+        f.rows.len(),
+        status(f, cmd.evaluate.is_some()),
+        f.row_evaluations
+    );
+    if !ignored.is_empty() {
+        let _ = writeln!(s, "  ignored columns: {}", ignored.join(", "));
+    }
+    let _ = writeln!(s, "\nCOEFFICIENTS");
+    for p in &f.parameters {
+        let _ = writeln!(
+            s,
+            "  {:<20} {:>12.6}   bounds [{}, {}]{}",
+            p.name,
+            p.value,
+            p.lower,
+            p.upper,
+            if (p.value - p.lower).abs() < 1e-6 * (p.upper - p.lower)
+                || (p.value - p.upper).abs() < 1e-6 * (p.upper - p.lower)
+            {
+                "  (on a bound)"
+            } else {
+                ""
+            }
+        );
+    }
+    // Columns: carry, apex, landing angle (the quantities every launch monitor reports).
+    let (long, height) = (
+        u.input_symbol(Quantity::Long),
+        u.input_symbol(Quantity::Height),
+    );
+    let _ = writeln!(
+        s,
+        "\nROWS{:22}carry [{long}]{:14}apex [{height}]{:8}landing angle [deg]",
+        "", "", ""
+    );
+    let _ = writeln!(
+        s,
+        "  {:>3}  {:<16} {:>7} {:>7} {:>6} {:>6}   {:>6} {:>6} {:>6}   {:>5} {:>5} {:>5}",
+        "#",
+        "label",
+        "meas",
+        "model",
+        "err%",
+        "loo%",
+        "meas",
+        "model",
+        "err",
+        "meas",
+        "model",
+        "err"
+    );
+    let disp = |q: Quantity, x: f64| u.to_display(q, x);
+    for r in &f.rows {
+        let obs = |i: usize| r.observed.get(i).copied().flatten();
+        let pred = |i: usize| r.predicted.get(i).copied().unwrap_or(f64::NAN);
+        let carry_obs = obs(0).unwrap_or(f64::NAN);
+        let loo = r
+            .loo_predicted
+            .as_ref()
+            .and_then(|l| l.first())
+            .map_or(String::from("-"), |l| {
+                format!("{:+.1}", 100.0 * (l - carry_obs) / carry_obs)
+            });
+        let cell = |i: usize, q: Quantity, prec: usize| match obs(i) {
+            Some(o) => format!(
+                "{:>6.p$} {:>6.p$} {:>+6.p$}",
+                disp(q, o),
+                disp(q, pred(i)),
+                disp(q, pred(i)) - disp(q, o),
+                p = prec
+            ),
+            None => format!("{:>6} {:>6.prec$} {:>6}", "-", disp(q, pred(i)), "-"),
+        };
+        let label: String = r.label.chars().take(16).collect();
+        let _ = writeln!(
+            s,
+            "  {:>3}  {:<16} {:>7.1} {:>7.1} {:>+6.1} {:>6}   {}   {}",
+            r.row,
+            label,
+            disp(Quantity::Long, carry_obs),
+            disp(Quantity::Long, pred(0)),
+            100.0 * (pred(0) - carry_obs) / carry_obs,
+            loo,
+            cell(1, Quantity::Height, 1),
+            cell(2, Quantity::Plain, 1),
+        );
+    }
+    let _ = writeln!(
+        s,
+        "\nERRORS{:14}mean |err|      max |err|      leave-one-out mean / max",
+        ""
+    );
+    let units = [
+        ("carry", Quantity::Long, long),
+        ("apex", Quantity::Height, height),
+        ("land_angle", Quantity::Plain, "deg"),
+        ("flight_time", Quantity::Plain, "s"),
+        ("side", Quantity::Long, long),
+    ];
+    for (i, (name, q, sym)) in units.iter().enumerate() {
+        let Some(m) = f.summary.get(i).filter(|m| m.rows > 0) else {
+            continue;
+        };
+        let pct = if *name == "carry" {
+            format!(" ({:.2} %)", m.mean_abs_pct)
+        } else {
+            String::new()
+        };
+        let loo = f
+            .loo_summary
+            .as_ref()
+            .and_then(|l| l.get(i))
+            .map_or(String::from("-"), |l| {
+                if *name == "carry" {
+                    format!("{:.2} % / {:.2} %", l.mean_abs_pct, l.max_abs_pct)
+                } else {
+                    format!(
+                        "{:.2} / {:.2} {sym}",
+                        disp(*q, l.mean_abs),
+                        disp(*q, l.max_abs)
+                    )
+                }
+            });
+        let _ = writeln!(
+            s,
+            "  {:<16} {:>7.2} {sym:<3}{pct:<11} {:>7.2} {sym:<5} {loo}",
+            name,
+            disp(*q, m.mean_abs),
+            disp(*q, m.max_abs),
+        );
+    }
+    if let Some(path) = &cmd.output {
+        let _ = writeln!(s, "\nwrote {}", path.display());
+    }
+    s
+}
