@@ -78,6 +78,10 @@ pub enum Command {
     /// A launch's carry in standard conditions (sea level, 21 °C, 50 % RH, no wind), and back.
     #[command(after_help = AFTER_HELP)]
     Normalize(Box<crate::analyses::normalize::NormalizeCmd>),
+    /// Club data from ball data: face, path, dynamic loft, attack, strike location and club
+    /// speed, each with its 1σ (the impact model run backwards; docs/estimate.md).
+    #[command(after_help = AFTER_HELP)]
+    Estimate(Box<crate::analyses::estimate::EstimateCmd>),
 }
 
 fn finite(s: &str) -> Result<f64, String> {

@@ -215,6 +215,7 @@ fn dispatch(cli: Cli) -> Result<(), Failure> {
         Command::Sweep(c) => write_stdout(c.run()?.as_bytes()),
         Command::Dispersion(c) => write_stdout(c.run()?.as_bytes()),
         Command::Normalize(c) => write_stdout(c.run()?.as_bytes()),
+        Command::Estimate(c) => write_stdout(c.run()?.as_bytes()),
         Command::Bench(BenchCmd::Accuracy {
             json,
             svg,
