@@ -302,7 +302,11 @@ fn estimate_paths<T: Real>() -> T {
     settings.tolerance = x(0.1);
     let club = ClubData {
         club_speed_mps: if black_box(true) { Some(x(45.0)) } else { None },
-        attack_angle_rad: if black_box(false) { Some(x(0.01)) } else { None },
+        attack_angle_rad: if black_box(false) {
+            Some(x(0.01))
+        } else {
+            None
+        },
         club_path_rad: if black_box(false) { Some(x(0.0)) } else { None },
         face_angle_rad: if black_box(false) { Some(x(0.0)) } else { None },
         dynamic_loft_rad: if black_box(false) { Some(x(0.2)) } else { None },

@@ -129,10 +129,22 @@ fn paths() -> u32 {
     // SAFETY: every pointer is NULL or points to a live value of its type; the zeroed
     // inputs are plain numbers (any bit pattern is a valid input).
     unsafe {
-        add(carry_estimate_input_default_f32(name, opaque(est32.as_mut_ptr())));
-        add(carry_estimate_input_default_f64(name, opaque(est64.as_mut_ptr())));
-        add(carry_estimate_f32(opaque(est32.as_ptr()), opaque(&mut r_est32)));
-        add(carry_estimate_f64(opaque(est64.as_ptr()), opaque(&mut r_est64)));
+        add(carry_estimate_input_default_f32(
+            name,
+            opaque(est32.as_mut_ptr()),
+        ));
+        add(carry_estimate_input_default_f64(
+            name,
+            opaque(est64.as_mut_ptr()),
+        ));
+        add(carry_estimate_f32(
+            opaque(est32.as_ptr()),
+            opaque(&mut r_est32),
+        ));
+        add(carry_estimate_f64(
+            opaque(est64.as_ptr()),
+            opaque(&mut r_est64),
+        ));
     }
     black_box((r_est32, r_est64));
     acc = acc.wrapping_add(carry_club_preset_count());
