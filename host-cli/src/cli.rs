@@ -479,6 +479,15 @@ pub enum BatchCmd {
         #[command(flatten)]
         cmd: ShotCmd,
     },
+    /// Many estimates of club data from ball data: launch columns (+ any measured club
+    /// columns) → face_angle_deg, club_path_deg, dynamic_loft_deg, … each with *_sd.
+    #[command(after_help = AFTER_HELP)]
+    Estimate {
+        #[command(flatten)]
+        batch: BatchArgs,
+        #[command(flatten)]
+        cmd: Box<crate::analyses::estimate::EstimateCmd>,
+    },
 }
 
 /// Plot options.

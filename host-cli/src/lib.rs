@@ -181,6 +181,9 @@ fn dispatch(cli: Cli) -> Result<(), Failure> {
                     (Mode::Flight, batch, cmd.resolve()?, &cmd.output)
                 }
                 BatchCmd::Shot { batch, cmd } => (Mode::Shot, batch, cmd.resolve()?, &cmd.output),
+                BatchCmd::Estimate { batch, cmd } => {
+                    return crate::analyses::estimate::batch(batch, cmd);
+                }
             };
             batch::run(&batch::Job {
                 mode,

@@ -126,3 +126,69 @@ fn estimate_rejects_bad_input_with_status_2() {
         assert!(stderr.contains(option), "{stderr}");
     }
 }
+
+#[test]
+fn batch_estimate_reads_launch_and_club_columns() {
+    let dir = std::env::temp_dir().join(format!("carry-est-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let input = dir.join("in.csv");
+    std::fs::write(
+        &input,
+        "label,ball_speed,launch_angle,launch_direction,spin,spin_axis,club_speed\n\
+         a,66,13.2,1.1,2750,6.5,45.5\n\
+         b,70,11,-2,2300,-8,\n\
+         c,-5,11,-2,2300,-8,45\n",
+    )
+    .expect("write input");
+    let path = input.to_string_lossy().into_owned();
+    let (code, csv, stderr) = run(&["batch", "estimate", "--club", "driver", "-i", &path]);
+    assert_eq!(code, 0, "{stderr}");
+    let mut lines = csv.lines();
+    let header: Vec<&str> = lines.next().expect("header").split(',').collect();
+    for c in [
+        "line",
+        "label",
+        "face_angle_deg",
+        "face_angle_deg_sd",
+        "club_path_deg",
+        "club_path_deg_sd",
+        "dynamic_loft_deg",
+        "attack_angle_deg",
+        "impact_toe_m",
+        "impact_height_m_sd",
+        "error",
+    ] {
+        assert!(header.contains(&c), "{c} in {header:?}");
+    }
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    assert_eq!(rows.len(), 3);
+    let col = |name: &str| header.iter().position(|h| *h == name).expect("column");
+    // the single-shot command gives the same numbers
+    let single = json(&[
+        "estimate",
+        "--club",
+        "driver",
+        "--ball-speed",
+        "66",
+        "--launch-angle",
+        "13.2",
+        "--launch-direction",
+        "1.1",
+        "--spin",
+        "2750",
+        "--spin-axis",
+        "6.5",
+        "--club-speed",
+        "45.5",
+        "--json",
+    ]);
+    let face: f64 = rows[0][col("face_angle_deg")].parse().expect("number");
+    assert_eq!(face, num(&single["face_angle_deg"]));
+    assert_eq!(rows[1][col("club_speed_estimated")], "1");
+    assert!(
+        rows[2][col("error")].contains("ball_speed"),
+        "{:?}",
+        rows[2]
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
