@@ -15,6 +15,12 @@ DASK_SHOTS=${DASK_SHOTS:-20000}
 say "rustfmt of the python crate"
 (cd python && cargo fmt --check)
 
+say "the python crate stands on core, io and lab only: no clap, no carry-cli (issue 24)"
+if (cd python && cargo tree -e normal,build --prefix none) | grep -E '^(clap|carry-cli) '; then
+  echo "python/ depends on clap or carry-cli" >&2
+  exit 1
+fi
+
 say "venv $VENV"
 python3 -m venv --clear "$VENV"
 # shellcheck disable=SC1091

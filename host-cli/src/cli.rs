@@ -696,13 +696,34 @@ impl ImpactCmd {
         let u = self.output.units;
         self.club.apply(&mut p, u);
         self.delivery.apply(&mut p, u);
-        let n = Numerics {
-            precision: self.precision.precision,
-            solver: self.solver.solver,
-            ..Numerics::default()
-        };
-        Ok((p, n))
+        Ok((p, numerics(&self.precision, Some(&self.solver), None)?))
     }
+}
+
+/// The numerics of a command's precision, solver and integrator options (what it lacks
+/// keeps the default), checked.
+///
+/// # Errors
+/// `--tolerance` with a fixed-step integrator.
+pub fn numerics(
+    precision: &PrecisionArgs,
+    solver: Option<&SolverArgs>,
+    integrator: Option<&IntegratorArgs>,
+) -> Result<Numerics, InputError> {
+    let mut n = Numerics {
+        precision: precision.precision,
+        ..Numerics::default()
+    };
+    if let Some(s) = solver {
+        n.solver = s.solver;
+    }
+    if let Some(i) = integrator {
+        n.integrator = i.integrator;
+        n.step_s = i.step;
+        n.tolerance = i.tolerance;
+    }
+    n.check()?;
+    Ok(n)
 }
 
 impl FlightCmd {
@@ -716,15 +737,7 @@ impl FlightCmd {
         self.ball.apply(&mut p, u);
         self.launch.apply(&mut p, u);
         self.scene.apply(&mut p, u)?;
-        let n = Numerics {
-            precision: self.precision.precision,
-            integrator: self.integrator.integrator,
-            step_s: self.integrator.step,
-            tolerance: self.integrator.tolerance,
-            ..Numerics::default()
-        };
-        n.check()?;
-        Ok((p, n))
+        Ok((p, numerics(&self.precision, None, Some(&self.integrator))?))
     }
 }
 
@@ -739,15 +752,10 @@ impl ShotCmd {
         self.club.apply(&mut p, u);
         self.delivery.apply(&mut p, u);
         self.scene.apply(&mut p, u)?;
-        let n = Numerics {
-            precision: self.precision.precision,
-            solver: self.solver.solver,
-            integrator: self.integrator.integrator,
-            step_s: self.integrator.step,
-            tolerance: self.integrator.tolerance,
-        };
-        n.check()?;
-        Ok((p, n))
+        Ok((
+            p,
+            numerics(&self.precision, Some(&self.solver), Some(&self.integrator))?,
+        ))
     }
 }
 

@@ -9,8 +9,8 @@ use carry_core::impact::{self, Solver};
 use carry_core::real::{lit, to_f64};
 use carry_core::units::{deg, rpm, to_deg, to_rpm};
 use carry_core::{
-    Ball, BallMotion, ClubHead, ClubSpec, Delivery, FaceLocation, FlightOutcome, Launch,
-    LaunchMetrics, PreparedScene, Real, RunEnd,
+    Ball, BallMotion, ClubHead, ClubSpec, Delivery, FlightOutcome, Launch, LaunchMetrics,
+    PreparedScene, Real, RunEnd,
 };
 
 use nalgebra::{Matrix3, Vector3};
@@ -202,23 +202,6 @@ pub fn impact_height_m(p: &Params) -> f64 {
         .unwrap_or(0.0)
 }
 
-/// Attack angle (deg): given, else the named club's typical one, else 0.
-#[must_use]
-pub fn attack_angle_deg(p: &Params) -> f64 {
-    p.delivery
-        .attack_angle_deg
-        .or_else(|| typical(p).map(|t| t.attack_angle_deg))
-        .unwrap_or(0.0)
-}
-
-/// Dynamic loft (deg): given, else the named club's typical one, else the static loft
-/// (`None`). Read in the delivery's convention, like the face angle.
-fn dynamic_loft_deg(p: &Params) -> Option<f64> {
-    p.delivery
-        .dynamic_loft_deg
-        .or_else(|| typical(p).map(|t| t.dynamic_loft_deg))
-}
-
 /// The ball of `p`, validated.
 ///
 /// # Errors
@@ -234,19 +217,31 @@ pub fn ball<T: Real>(p: &Params) -> Result<Ball<T>, InputError> {
 #[must_use]
 pub fn delivery<T: Real>(p: &Params, head: &ClubHead<T>) -> Delivery<T> {
     let d = &p.delivery;
-    Delivery {
-        club_speed_mps: lit(club_speed_mps(p)),
-        attack_angle_rad: deg(lit(attack_angle_deg(p))),
-        club_path_rad: deg(lit(d.club_path_deg)),
-        face_angle_rad: deg(lit(d.face_angle_deg)),
-        dynamic_loft_rad: dynamic_loft_deg(p).map_or(head.loft_rad(), |a| deg(lit(a))),
-        lie_rad: deg(lit(d.lie_deg)),
-        club_spin_radps: v3(d.club_spin_radps),
-        location: FaceLocation {
-            height_m: lit(impact_height_m(p)),
-            toe_m: lit(d.impact_toe_m),
-        },
+    // What the user did not give: the named club's typical delivery (the core's rule,
+    // `TypicalDelivery::delivery`), else the reference: square and centred at the default
+    // club speed and the static loft.
+    let mut out = typical(p).map_or_else(
+        || Delivery::square(lit(d.club_speed_mps), head),
+        carry_core::presets::TypicalDelivery::delivery::<T>,
+    );
+    if d.club_speed_given {
+        out.club_speed_mps = lit(d.club_speed_mps);
     }
+    if let Some(a) = d.attack_angle_deg {
+        out.attack_angle_rad = deg(lit(a));
+    }
+    if let Some(a) = d.dynamic_loft_deg {
+        out.dynamic_loft_rad = deg(lit(a));
+    }
+    if let Some(h) = d.impact_height_m {
+        out.location.height_m = lit(h);
+    }
+    out.club_path_rad = deg(lit(d.club_path_deg));
+    out.face_angle_rad = deg(lit(d.face_angle_deg));
+    out.lie_rad = deg(lit(d.lie_deg));
+    out.club_spin_radps = v3(d.club_spin_radps);
+    out.location.toe_m = lit(d.impact_toe_m);
+    out
 }
 
 /// The delivery of `p` in the seed's reading (the club's centre orientation derived from

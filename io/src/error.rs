@@ -6,9 +6,10 @@
 //! --impact-toe`; no landing → `--landing-height`, …). The ranges a message quotes come from
 //! the core's constants (stimp, slope, turf coefficients, launch speed and spin).
 
-use carry_core::ground::MAX_SLOPE_RAD;
-use carry_core::ground::surface::{MAX_TURF_COEFFICIENT, STIMP_RANGE_M};
-use carry_core::units::M_PER_FOOT;
+use carry_core::ground::surface::MAX_TURF_COEFFICIENT;
+use carry_core::units::{
+    ALTITUDE_RANGE_M, M_PER_FOOT, MAX_SLOPE_RAD, STIMP_RANGE_M, TEMPERATURE_RANGE_C,
+};
 use carry_core::{Error, Field};
 use std::fmt;
 
@@ -122,16 +123,33 @@ pub fn field_key(field: Field) -> &'static str {
     }
 }
 
+/// A number as the messages write it: a true minus sign (−), no trailing `.0`.
+struct Minus(f64);
+
+impl fmt::Display for Minus {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if self.0 < 0.0 {
+            write!(f, "−{}", -self.0)
+        } else {
+            write!(f, "{}", self.0)
+        }
+    }
+}
+
 impl From<Error> for InputError {
     fn from(e: Error) -> Self {
         match e {
             Error::InvalidInput { field, reason } => {
                 let reason = match field {
-                    // TODO(i24core): the air's ranges (temperature, altitude) from the core's
-                    // constants once `carry_core::air` names them.
                     Field::Humidity => format!("{reason} (0 to 100 percent)"),
-                    Field::Temperature => format!("{reason} (−100 to 100 °C)"),
-                    Field::Altitude => format!("{reason} (−5000 to 11000 m)"),
+                    Field::Temperature => {
+                        let (lo, hi) = TEMPERATURE_RANGE_C;
+                        format!("{reason} ({} to {hi} °C)", Minus(lo))
+                    }
+                    Field::Altitude => {
+                        let (lo, hi) = ALTITUDE_RANGE_M;
+                        format!("{reason} ({} to {hi} m)", Minus(lo))
+                    }
                     Field::Restitution | Field::GroundRestitution => format!("{reason} (0 to 1)"),
                     Field::Stimp => {
                         let (lo, hi) = STIMP_RANGE_M;
@@ -220,6 +238,8 @@ mod tests {
         assert!(reason(Field::Stimp).ends_with("(1 to 30 ft)"));
         assert!(reason(Field::GroundNormal).ends_with("(0 to 45 degrees)"));
         assert!(reason(Field::CraterScale).ends_with("(0 to 10)"));
+        assert!(reason(Field::Temperature).ends_with("(−100 to 100 °C)"));
+        assert!(reason(Field::Altitude).ends_with("(−5000 to 11000 m)"));
     }
 
     #[test]

@@ -162,16 +162,19 @@ macro_rules! xyz {
     };
 }
 
+#[inline(always)]
 fn real<F: FnMut(&'static str, Cell)>(f: &mut F, name: &'static str, x: Option<f64>) {
     f(name, x.map_or(Cell::Missing, Cell::Real));
 }
 
+#[inline(always)]
 fn vector<F: FnMut(&'static str, Cell)>(f: &mut F, names: [&'static str; 3], v: Option<[f64; 3]>) {
     for (i, name) in names.into_iter().enumerate() {
         real(f, name, v.map(|v| v[i]));
     }
 }
 
+#[inline(always)]
 fn count<F: FnMut(&'static str, Cell)>(f: &mut F, name: &'static str, n: Option<u32>) {
     f(name, n.map_or(Cell::Missing, Cell::Count));
 }
@@ -300,6 +303,7 @@ impl Floats {
     }
 
     /// Appends a comma and `cell` (empty when missing or not finite).
+    #[inline(always)]
     fn field(&mut self, out: &mut Vec<u8>, cell: Cell) {
         out.push(b',');
         match cell {
@@ -341,7 +345,13 @@ fn itoa_u32(mut n: u32) -> Digits {
 
 /// Appends the result fields of `r` (each preceded by a comma) in [`csv_columns`] order.
 pub fn write_csv_fields(out: &mut Vec<u8>, f: &mut Floats, mode: Mode, ground: bool, r: &Report) {
-    visit_fields(mode, ground, Some(r), |_, cell| f.field(out, cell));
+    visit_fields(
+        mode,
+        ground,
+        Some(r),
+        #[inline(always)]
+        |_, cell| f.field(out, cell),
+    );
 }
 
 /// Appends empty result fields (an error row).

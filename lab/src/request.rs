@@ -122,7 +122,7 @@ pub struct NoiseSd {
 }
 
 impl NoiseSd {
-    /// The option names, in the order of [`NoiseSd::set`]'s indices.
+    /// The option names, in the order of the fields.
     pub const KEYS: [&'static str; 7] = NOISE_KEYS;
 
     /// The noise in SI (speed m/s, location m), from `u`.

@@ -43,14 +43,7 @@ impl ShotArgs {
         self.club.apply(&mut p, units);
         self.delivery.apply(&mut p, units);
         self.scene.apply(&mut p, units)?;
-        let n = Numerics {
-            precision: self.precision.precision,
-            solver: self.solver.solver,
-            integrator: self.integrator.integrator,
-            step_s: self.integrator.step,
-            tolerance: self.integrator.tolerance,
-        };
-        n.check()?;
+        let n = crate::cli::numerics(&self.precision, Some(&self.solver), Some(&self.integrator))?;
         Ok((p, n))
     }
 }

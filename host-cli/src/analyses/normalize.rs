@@ -2,7 +2,6 @@
 
 use super::output;
 use crate::cli::{BallArgs, IntegratorArgs, LaunchArgs, OutputArgs, PrecisionArgs, SceneArgs};
-use carry_io::compute::Numerics;
 use carry_io::error::Failure;
 use carry_io::params::Params;
 use carry_io::units::{Quantity, Units};
@@ -52,14 +51,7 @@ impl NormalizeCmd {
         self.ball.apply(&mut p, u);
         self.launch.apply(&mut p, u);
         self.scene.apply(&mut p, u)?;
-        let n = Numerics {
-            precision: self.precision.precision,
-            integrator: self.integrator.integrator,
-            step_s: self.integrator.step,
-            tolerance: self.integrator.tolerance,
-            ..Numerics::default()
-        };
-        n.check()?;
+        let n = crate::cli::numerics(&self.precision, None, Some(&self.integrator))?;
         let to = match self.to {
             To::Standard => carry_lab::request::To::Standard,
             To::Conditions => carry_lab::request::To::Conditions,

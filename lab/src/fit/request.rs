@@ -59,15 +59,15 @@ pub struct FitRequest {
     pub json: bool,
     /// No progress bar.
     pub no_progress: bool,
-    /// Air density of rows without conditions [kg/m³] (default 1.225). Excludes weather.
+    /// Air density of rows without conditions (kg/m³) (default 1.225). Excludes weather.
     pub air_density: Option<f64>,
-    /// Temperature of rows without conditions [°C | °F] (weather; default 15 °C).
+    /// Temperature of rows without conditions (°C | °F) (weather; default 15 °C).
     pub temperature: Option<f64>,
-    /// Relative humidity of rows without conditions [%] (weather; default 0).
+    /// Relative humidity of rows without conditions (%) (weather; default 0).
     pub humidity: Option<f64>,
-    /// Station pressure of rows without conditions [Pa] (weather). Excludes --altitude.
+    /// Station pressure of rows without conditions (Pa) (weather). Excludes --altitude.
     pub pressure: Option<f64>,
-    /// Altitude of rows without conditions [m | ft] (weather).
+    /// Altitude of rows without conditions (m | ft) (weather).
     pub altitude: Option<f64>,
 }
 

@@ -1,0 +1,116 @@
+//! The typed analysis requests (`carry_lab::request`) the CLI and Python share: options given
+//! with the shot are held or noted, in f32 and f64, and the fit request's exclusive options.
+
+use carry_io::compute::{Numerics, Precision};
+use carry_io::params::{Key, Params, Value};
+use carry_io::units::Units;
+use carry_lab::fit::request::FitRequest;
+use carry_lab::request::{OptimizeOutcome, OptimizeRequest, SweepRequest};
+
+fn seven_iron() -> Params {
+    let mut p = Params::default();
+    Key::Club.set(
+        &mut p,
+        Units::Si,
+        Key::Club.parse("7iron").expect("a preset"),
+    );
+    Key::ClubSpeed.set(&mut p, Units::Si, Value::Number(40.0));
+    p
+}
+
+fn numerics(precision: Precision) -> Numerics {
+    Numerics {
+        precision,
+        ..Numerics::default()
+    }
+}
+
+#[test]
+fn a_given_angle_is_held_and_a_range_frees_it_with_a_note() {
+    for precision in [Precision::F32, Precision::F64] {
+        let n = numerics(precision);
+        let mut p = seven_iron();
+        Key::AttackAngle.set(&mut p, Units::Si, Value::Number(-2.0));
+        let request = OptimizeRequest {
+            starts: 1,
+            dynamic_loft_range: Some([18.0, 32.0]),
+            ..OptimizeRequest::default()
+        };
+        let mut notes = Vec::new();
+        let Ok(OptimizeOutcome::Optimum(held)) = request.run(&p, &n, &mut notes) else {
+            panic!("{precision:?}: the search runs")
+        };
+        assert!(notes.is_empty(), "{notes:?}");
+        assert_eq!(held.point.attack_angle_deg, -2.0, "{precision:?}");
+        assert_eq!(held.flatness.len(), 1, "{precision:?}");
+
+        let ranged = OptimizeRequest {
+            attack_angle_range: Some([-5.0, 1.0]),
+            ..request
+        };
+        let Ok(OptimizeOutcome::Optimum(free)) = ranged.run(&p, &n, &mut notes) else {
+            panic!("{precision:?}: the search runs")
+        };
+        assert_eq!(notes.len(), 1, "{notes:?}");
+        assert!(notes[0].contains("--attack-angle is ignored"), "{notes:?}");
+        assert_eq!(free.flatness.len(), 2);
+        // Freed, the optimizer finds at least the carry of the held angle.
+        assert!(free.objective_value >= held.objective_value - 1e-3);
+    }
+}
+
+#[test]
+fn the_swing_notes_the_delivery_it_replaces() {
+    let mut p = seven_iron();
+    Key::FaceAngle.set(&mut p, Units::Si, Value::Number(1.0));
+    let request = SweepRequest {
+        ball_positions: Some([0.0, 0.01, 0.01]),
+        ..SweepRequest::default()
+    };
+    let mut notes = Vec::new();
+    let sweep = request.run(&p, &numerics(Precision::F64), &mut notes);
+    assert!(sweep.is_ok());
+    // The club speed and the face angle were given.
+    assert_eq!(notes.len(), 2, "{notes:?}");
+    assert!(
+        notes.iter().any(|n| n.contains("--face-angle")),
+        "{notes:?}"
+    );
+}
+
+#[test]
+fn the_fit_request_rejects_options_that_exclude_each_other() {
+    let base = FitRequest {
+        family: "modern".into(),
+        ..FitRequest::default()
+    };
+    assert!(base.check().is_ok());
+    for (bad, key) in [
+        (
+            FitRequest {
+                air_density: Some(1.2),
+                temperature: Some(20.0),
+                ..base.clone()
+            },
+            "air_density",
+        ),
+        (
+            FitRequest {
+                pressure: Some(101_325.0),
+                altitude: Some(100.0),
+                ..base.clone()
+            },
+            "pressure",
+        ),
+        (
+            FitRequest {
+                output: Some("m.toml".into()),
+                evaluate: Some("tour2023".into()),
+                ..base.clone()
+            },
+            "output",
+        ),
+    ] {
+        assert_eq!(bad.check().map_err(|e| e.key), Err(key));
+    }
+}
