@@ -781,3 +781,32 @@ pub fn estimate(p: &Params, n: &Numerics, club: &MeasuredClub) -> Result<Estimat
         Precision::F64 => run_in::<f64>(p, club),
     }
 }
+
+/// [`estimate`] over many rows in parallel on `threads` workers (`None`: all cores), each
+/// row the parameters and measured club data of one shot, or the error its input had; the
+/// results in row order.
+///
+/// # Errors
+/// The thread pool cannot start.
+pub fn estimate_rows(
+    rows: &[Result<(Params, MeasuredClub), InputError>],
+    n: &Numerics,
+    threads: Option<usize>,
+) -> Result<Vec<Result<EstimateRecord, InputError>>, Failure> {
+    use rayon::prelude::*;
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads.unwrap_or(0))
+        .build()
+        .map_err(|e| Failure::Other(e.to_string()))?;
+    Ok(pool.install(|| {
+        rows.par_iter()
+            .map(|row| {
+                let (p, club) = row.as_ref().map_err(Clone::clone)?;
+                estimate(p, n, club).map_err(|e| match e {
+                    Failure::Input(e) => e,
+                    other => InputError::new("estimate", format!("{other:?}")),
+                })
+            })
+            .collect()
+    }))
+}

@@ -238,7 +238,6 @@ pub fn batch(args: &crate::cli::BatchArgs, cmd: &EstimateCmd) -> Result<(), Fail
     use carry_io::batch::Columns;
     use carry_io::compute::Mode;
     use carry_io::error::InputError;
-    use rayon::prelude::*;
     let u = cmd.output.units;
     let mut base = Params::default();
     cmd.club.apply(&mut base, u);
@@ -300,7 +299,7 @@ pub fn batch(args: &crate::cli::BatchArgs, cmd: &EstimateCmd) -> Result<(), Fail
         .byte_records()
         .collect::<Result<_, _>>()
         .map_err(|e| InputError::new("input", format!("{name}: {e}")))?;
-    let row = |rec: &csv::ByteRecord| -> Result<EstimateRecord, InputError> {
+    let row = |rec: &csv::ByteRecord| -> Result<(Params, MeasuredClub), InputError> {
         let mut sub = csv::ByteRecord::new();
         for &i in &launch_idx {
             sub.push_field(rec.get(i).unwrap_or_default());
@@ -331,23 +330,19 @@ pub fn batch(args: &crate::cli::BatchArgs, cmd: &EstimateCmd) -> Result<(), Fail
             face_angle_deg,
             dynamic_loft_deg,
         ] = club;
-        let measured = MeasuredClub {
-            club_speed_mps,
-            attack_angle_deg,
-            club_path_deg,
-            face_angle_deg,
-            dynamic_loft_deg,
-        };
-        carry_lab::request::estimate(&p, &numerics, &measured).map_err(|e| match e {
-            Failure::Input(e) => e,
-            other => InputError::new("estimate", format!("{other:?}")),
-        })
+        Ok((
+            p,
+            MeasuredClub {
+                club_speed_mps,
+                attack_angle_deg,
+                club_path_deg,
+                face_angle_deg,
+                dynamic_loft_deg,
+            },
+        ))
     };
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(args.threads.unwrap_or(0))
-        .build()
-        .map_err(|e| Failure::Other(e.to_string()))?;
-    let results: Vec<_> = pool.install(|| records.par_iter().map(row).collect());
+    let inputs: Vec<_> = records.iter().map(row).collect();
+    let results = carry_lab::request::estimate_rows(&inputs, &numerics, args.threads)?;
     let mut out = String::new();
     let label = cols.label;
     if !cmd.output.json {
