@@ -11,7 +11,7 @@ say() { printf -- '--- %s (t=%ss)\n' "$*" "$((SECONDS - start))"; }
 
 say "no-panic link: release images of the impact and flight paths and of the C API, undefined panic handler"
 (cd nopanic && cargo build --release --target thumbv7em-none-eabihf)
-echo "nopanic: linked — no panic path reachable from the core's impact and flight entry points"
+echo "nopanic: linked — no panic path reachable from the core's impact, flight and estimate entry points"
 echo "nopanic: linked — no panic path reachable from the C API's entry points (carry-ffi, bin ffi)"
 
 say "negative control: one deliberate panic must fail the link"
@@ -53,6 +53,7 @@ runs_for() {
   case "$1" in
     cli) base=12000 ;;
     ffi) base=120000 ;;
+    estimate) base=20000 ;;
     flight) base=80000 ;;
     ground) base=150000 ;;
     impact) base=5000000 ;;

@@ -15,6 +15,8 @@ use std::path::{Path, PathBuf};
 
 #[path = "src/cases.rs"]
 mod cases;
+#[path = "src/estimate_cases.rs"]
+mod estimate_cases;
 #[path = "src/golden_input.rs"]
 mod golden_input;
 #[path = "src/ground_cases.rs"]
@@ -48,9 +50,11 @@ fn main() {
     impact(&carry_golden::impact_cases().unwrap(), &mut code);
     flight(&carry_golden::flight_cases().unwrap(), &mut code);
     ground(&mut code);
+    estimates(&mut code);
     std::fs::write(out.join("golden_data.rs"), code).unwrap();
     println!("cargo::rerun-if-changed=src/cases.rs");
     println!("cargo::rerun-if-changed=src/ground_cases.rs");
+    println!("cargo::rerun-if-changed=src/estimate_cases.rs");
     println!("cargo::rerun-if-changed=build.rs");
 }
 
@@ -221,6 +225,23 @@ fn ground(code: &mut String) {
             c.name,
             host::<f32, GROUND_OUTPUTS>(c.outputs(), bits32),
             host::<f64, GROUND_OUTPUTS>(c.outputs(), bits64),
+        )
+        .unwrap();
+    }
+    writeln!(code, "];").unwrap();
+}
+
+/// The host's results of the estimates (src/estimate_cases.rs).
+fn estimates(code: &mut String) {
+    use estimate_cases::{ESTIMATE_CASES, ESTIMATE_OUTPUTS};
+    writeln!(code, "pub const ESTIMATE: &[EstimateHost] = &[").unwrap();
+    for c in &ESTIMATE_CASES {
+        writeln!(
+            code,
+            "EstimateHost {{ name: {:?}, host_f32: {}, host_f64: {} }},",
+            c.name,
+            host::<f32, ESTIMATE_OUTPUTS>(c.outputs(), bits32),
+            host::<f64, ESTIMATE_OUTPUTS>(c.outputs(), bits64),
         )
         .unwrap();
     }

@@ -134,6 +134,15 @@ pub enum Field {
     Step,
     /// Integrator tolerance.
     Tolerance,
+    // --- estimate (club data from ball data) ---
+    /// A measurement's 1σ noise of the estimator.
+    MeasurementNoise,
+    /// A prior mean of the estimator.
+    PriorMean,
+    /// A prior spread (1σ) of the estimator.
+    PriorSpread,
+    /// The estimator's iteration budget.
+    Iterations,
 }
 
 /// Why an input was rejected.
@@ -195,6 +204,12 @@ pub enum Error {
     /// ([`crate::flight::MAX_ADAPTIVE_STEPS`]) before landing: the flight is too stiff or
     /// too long for the tolerance. Bounds the run time of every flight (firmware never hangs).
     StepLimit,
+    /// The estimator ([`crate::estimate`]) used up its iteration budget before its steps
+    /// became small.
+    NoConvergence,
+    /// The estimator's normal matrix is numerically singular: the measurements and priors
+    /// do not pin the unknowns down in this precision.
+    IllPosed,
 }
 
 /// Result alias of the core.
@@ -271,6 +286,10 @@ impl Field {
             Self::GroundNormal => "ground slope",
             Self::Step => "step size",
             Self::Tolerance => "tolerance",
+            Self::MeasurementNoise => "measurement noise",
+            Self::PriorMean => "prior mean",
+            Self::PriorSpread => "prior spread",
+            Self::Iterations => "iteration budget",
         }
     }
 }
@@ -318,6 +337,12 @@ impl fmt::Display for Error {
             Self::StepLimit => {
                 f.write_str("the adaptive integrator used up its step budget before landing")
             }
+            Self::NoConvergence => {
+                f.write_str("the estimate did not converge within its iteration budget")
+            }
+            Self::IllPosed => f.write_str(
+                "the estimate is ill-posed: the data and priors do not determine the delivery",
+            ),
         }
     }
 }

@@ -35,6 +35,7 @@ pub mod contact_law;
 pub mod convention;
 pub mod delivery;
 pub mod error;
+pub mod estimate;
 pub mod face;
 pub mod geometry;
 pub mod impact;

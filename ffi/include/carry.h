@@ -18,6 +18,21 @@
 // and the CLI's default), with the `friction`… parameters of the struct.
 #define CARRY_CONTACT_COMPLIANT 1
 
+// `CarryEstimateInput::measured` bit: the club speed was measured.
+#define CARRY_MEASURED_CLUB_SPEED 1
+
+// `CarryEstimateInput::measured` bit: the attack angle was measured.
+#define CARRY_MEASURED_ATTACK_ANGLE 2
+
+// `CarryEstimateInput::measured` bit: the club path was measured.
+#define CARRY_MEASURED_CLUB_PATH 4
+
+// `CarryEstimateInput::measured` bit: the face angle was measured.
+#define CARRY_MEASURED_FACE_ANGLE 8
+
+// `CarryEstimateInput::measured` bit: the dynamic loft was measured.
+#define CARRY_MEASURED_DYNAMIC_LOFT 16
+
 // Default trajectory sample interval (s).
 #define CARRY_DEFAULT_RECORD_INTERVAL_S 0.1
 
@@ -783,6 +798,214 @@ typedef struct CarryShotResult_f64 {
 // Shot result in double precision.
 typedef struct CarryShotResult_f64 CarryShotResultF64;
 
+// The five ball numbers a launch monitor measures (m/s, rad, rad/s).
+typedef struct CarryBallData_f32 {
+  // Ball speed (m/s).
+  float ball_speed_mps;
+  // Launch angle, + up (rad).
+  float launch_angle_rad;
+  // Launch direction, + right (rad).
+  float launch_direction_rad;
+  // Total spin (rad/s).
+  float spin_radps;
+  // Spin axis, + tilted right (rad).
+  float spin_axis_rad;
+} CarryBallData_f32;
+
+// The estimator's unknowns (TrackMan's convention; m/s, rad, m): also the shape of the
+// prior's mean and spread and of the club measurements and their noise.
+typedef struct CarryDeliveryData_f32 {
+  // Face angle at the contact point (rad, + open).
+  float face_angle_rad;
+  // Club path (rad, + in-to-out).
+  float club_path_rad;
+  // Dynamic loft at the contact point (rad).
+  float dynamic_loft_rad;
+  // Attack angle (rad, + up).
+  float attack_angle_rad;
+  // Strike toward the toe from the face centre (m).
+  float impact_toe_m;
+  // Strike up the face from the face centre (m).
+  float impact_height_m;
+  // Club head speed (m/s).
+  float club_speed_mps;
+} CarryDeliveryData_f32;
+
+// What an estimate needs. Start from `carry_estimate_input_default_*`.
+typedef struct CarryEstimateInput_f32 {
+  // The club head.
+  struct CarryClub_f32 club;
+  // The ball.
+  struct CarryBall_f32 ball;
+  // The measured ball data.
+  struct CarryBallData_f32 measured_ball;
+  // Which club data were measured: an OR of `CARRY_MEASURED_*` bits.
+  uint32_t measured;
+  // The measured club data (only the fields `measured` names are read; strike location
+  // unused).
+  struct CarryDeliveryData_f32 measured_club;
+  // 1σ noise of the ball data.
+  struct CarryBallData_f32 ball_noise;
+  // 1σ noise of the club data.
+  struct CarryDeliveryData_f32 club_noise;
+  // Prior mean of the delivery.
+  struct CarryDeliveryData_f32 prior_mean;
+  // Prior spread (1σ) of the delivery.
+  struct CarryDeliveryData_f32 prior_sd;
+  // Iteration budget, 1..=100.
+  uint32_t max_iterations;
+  // Stop when the Newton step is below this many posterior σ, in (0, 1].
+  float tolerance;
+} CarryEstimateInput_f32;
+
+// Estimate input in single precision.
+typedef struct CarryEstimateInput_f32 CarryEstimateInputF32;
+
+// The five ball numbers a launch monitor measures (m/s, rad, rad/s).
+typedef struct CarryBallData_f64 {
+  // Ball speed (m/s).
+  double ball_speed_mps;
+  // Launch angle, + up (rad).
+  double launch_angle_rad;
+  // Launch direction, + right (rad).
+  double launch_direction_rad;
+  // Total spin (rad/s).
+  double spin_radps;
+  // Spin axis, + tilted right (rad).
+  double spin_axis_rad;
+} CarryBallData_f64;
+
+// The estimator's unknowns (TrackMan's convention; m/s, rad, m): also the shape of the
+// prior's mean and spread and of the club measurements and their noise.
+typedef struct CarryDeliveryData_f64 {
+  // Face angle at the contact point (rad, + open).
+  double face_angle_rad;
+  // Club path (rad, + in-to-out).
+  double club_path_rad;
+  // Dynamic loft at the contact point (rad).
+  double dynamic_loft_rad;
+  // Attack angle (rad, + up).
+  double attack_angle_rad;
+  // Strike toward the toe from the face centre (m).
+  double impact_toe_m;
+  // Strike up the face from the face centre (m).
+  double impact_height_m;
+  // Club head speed (m/s).
+  double club_speed_mps;
+} CarryDeliveryData_f64;
+
+// What an estimate needs. Start from `carry_estimate_input_default_*`.
+typedef struct CarryEstimateInput_f64 {
+  // The club head.
+  struct CarryClub_f64 club;
+  // The ball.
+  struct CarryBall_f64 ball;
+  // The measured ball data.
+  struct CarryBallData_f64 measured_ball;
+  // Which club data were measured: an OR of `CARRY_MEASURED_*` bits.
+  uint32_t measured;
+  // The measured club data (only the fields `measured` names are read; strike location
+  // unused).
+  struct CarryDeliveryData_f64 measured_club;
+  // 1σ noise of the ball data.
+  struct CarryBallData_f64 ball_noise;
+  // 1σ noise of the club data.
+  struct CarryDeliveryData_f64 club_noise;
+  // Prior mean of the delivery.
+  struct CarryDeliveryData_f64 prior_mean;
+  // Prior spread (1σ) of the delivery.
+  struct CarryDeliveryData_f64 prior_sd;
+  // Iteration budget, 1..=100.
+  uint32_t max_iterations;
+  // Stop when the Newton step is below this many posterior σ, in (0, 1].
+  double tolerance;
+} CarryEstimateInput_f64;
+
+// Estimate input in double precision.
+typedef struct CarryEstimateInput_f64 CarryEstimateInputF64;
+
+// The estimated delivery, or its 1σ (rad, m, m/s).
+typedef struct CarryClubEstimate_f32 {
+  // Face angle at the contact point (rad).
+  float face_angle_rad;
+  // Club path (rad).
+  float club_path_rad;
+  // Face to path (rad).
+  float face_to_path_rad;
+  // Dynamic loft at the contact point (rad).
+  float dynamic_loft_rad;
+  // Attack angle (rad).
+  float attack_angle_rad;
+  // Spin loft, dynamic loft − attack (rad).
+  float spin_loft_rad;
+  // Strike toward the toe (m).
+  float impact_toe_m;
+  // Strike up the face (m).
+  float impact_height_m;
+  // Club speed (m/s).
+  float club_speed_mps;
+  // Smash factor.
+  float smash_factor;
+} CarryClubEstimate_f32;
+
+// The result of an estimate.
+typedef struct CarryEstimateResult_f32 {
+  // The most probable delivery.
+  struct CarryClubEstimate_f32 value;
+  // Its 1σ.
+  struct CarryClubEstimate_f32 sd;
+  // Modelled − measured ball data.
+  struct CarryBallData_f32 residual;
+  // Iterations used.
+  uint32_t iterations;
+  // 1 when the club speed was estimated, 0 when measured.
+  uint32_t club_speed_estimated;
+} CarryEstimateResult_f32;
+
+// Estimate result in single precision.
+typedef struct CarryEstimateResult_f32 CarryEstimateResultF32;
+
+// The estimated delivery, or its 1σ (rad, m, m/s).
+typedef struct CarryClubEstimate_f64 {
+  // Face angle at the contact point (rad).
+  double face_angle_rad;
+  // Club path (rad).
+  double club_path_rad;
+  // Face to path (rad).
+  double face_to_path_rad;
+  // Dynamic loft at the contact point (rad).
+  double dynamic_loft_rad;
+  // Attack angle (rad).
+  double attack_angle_rad;
+  // Spin loft, dynamic loft − attack (rad).
+  double spin_loft_rad;
+  // Strike toward the toe (m).
+  double impact_toe_m;
+  // Strike up the face (m).
+  double impact_height_m;
+  // Club speed (m/s).
+  double club_speed_mps;
+  // Smash factor.
+  double smash_factor;
+} CarryClubEstimate_f64;
+
+// The result of an estimate.
+typedef struct CarryEstimateResult_f64 {
+  // The most probable delivery.
+  struct CarryClubEstimate_f64 value;
+  // Its 1σ.
+  struct CarryClubEstimate_f64 sd;
+  // Modelled − measured ball data.
+  struct CarryBallData_f64 residual;
+  // Iterations used.
+  uint32_t iterations;
+  // 1 when the club speed was estimated, 0 when measured.
+  uint32_t club_speed_estimated;
+} CarryEstimateResult_f64;
+
+// Estimate result in double precision.
+typedef struct CarryEstimateResult_f64 CarryEstimateResultF64;
+
 // A ball in single precision.
 typedef struct CarryBall_f32 CarryBallF32;
 
@@ -935,6 +1158,36 @@ enum carry_error_t carry_shot_f64(const CarryShotInputF64 *input,
                                   size_t capacity,
                                   size_t *count,
                                   CarryShotResultF64 *out);
+
+// The default estimate input for the preset named `name` (issue 23): its club, the
+// standard ball, the default launch-monitor noise and the preset's typical prior, nothing
+// measured; fill in `measured_ball` (and `measured`/`measured_club`). Single precision.
+//
+// # Safety
+// `name` is NULL or NUL-terminated; `out` is NULL or points to a writable input.
+enum carry_error_t carry_estimate_input_default_f32(const char *name, CarryEstimateInputF32 *out);
+
+// The default estimate input, double precision (see `carry_estimate_input_default_f32`).
+//
+// # Safety
+// As `carry_estimate_input_default_f32`.
+enum carry_error_t carry_estimate_input_default_f64(const char *name, CarryEstimateInputF64 *out);
+
+// Club data from ball data (issue 23, docs/estimate.md): the delivery that explains the
+// measured ball data, each datum with its 1σ; single precision. Writes `*out` on
+// `CARRY_OK` only.
+//
+// # Safety
+// `input` is NULL or points to a readable input, `out` NULL or to a writable result.
+enum carry_error_t carry_estimate_f32(const CarryEstimateInputF32 *input,
+                                      CarryEstimateResultF32 *out);
+
+// Club data from ball data, double precision (see `carry_estimate_f32`).
+//
+// # Safety
+// As `carry_estimate_f32`.
+enum carry_error_t carry_estimate_f64(const CarryEstimateInputF64 *input,
+                                      CarryEstimateResultF64 *out);
 
 // Fills `*out` with a club head: the `driver` preset with its calibrated compliant contact (the CLI's default club); single precision.
 //

@@ -313,3 +313,88 @@ pub unsafe extern "C" fn carry_shot_f64(
     // SAFETY: the caller's contract, forwarded.
     unsafe { shot_entry(input, samples, capacity, count, out) }
 }
+
+/// # Safety
+/// `input` is NULL or readable; `out` is NULL or writable.
+unsafe fn estimate_entry<T: Real>(
+    input: *const crate::estimate::CarryEstimateInput<T>,
+    out: *mut crate::estimate::CarryEstimateResult<T>,
+) -> CarryError {
+    code((|| {
+        let out = non_null(out)?;
+        // SAFETY: NULL or readable by the caller's contract.
+        let result = unsafe { with(input, crate::estimate::run) }?;
+        // SAFETY: not NULL; writable by the caller's contract.
+        unsafe { write(out, result) };
+        Ok(())
+    })())
+}
+
+fn estimate_default<T: Real>(
+    preset: Result<&'static Preset>,
+    out: *mut crate::estimate::CarryEstimateInput<T>,
+) -> CarryError {
+    code((|| {
+        let out = non_null(out)?;
+        let input = crate::estimate::CarryEstimateInput::typical(preset?);
+        // SAFETY: not NULL; writable by the caller's contract.
+        unsafe { write(out, input) };
+        Ok(())
+    })())
+}
+
+/// The default estimate input for the preset named `name` (issue 23): its club, the
+/// standard ball, the default launch-monitor noise and the preset's typical prior, nothing
+/// measured; fill in `measured_ball` (and `measured`/`measured_club`). Single precision.
+///
+/// # Safety
+/// `name` is NULL or NUL-terminated; `out` is NULL or points to a writable input.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn carry_estimate_input_default_f32(
+    name: *const c_char,
+    out: *mut crate::CarryEstimateInputF32,
+) -> CarryError {
+    // SAFETY: the caller's contract, forwarded.
+    estimate_default(unsafe { preset_named(name) }, out)
+}
+
+/// The default estimate input, double precision (see `carry_estimate_input_default_f32`).
+///
+/// # Safety
+/// As `carry_estimate_input_default_f32`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn carry_estimate_input_default_f64(
+    name: *const c_char,
+    out: *mut crate::CarryEstimateInputF64,
+) -> CarryError {
+    // SAFETY: the caller's contract, forwarded.
+    estimate_default(unsafe { preset_named(name) }, out)
+}
+
+/// Club data from ball data (issue 23, docs/estimate.md): the delivery that explains the
+/// measured ball data, each datum with its 1σ; single precision. Writes `*out` on
+/// `CARRY_OK` only.
+///
+/// # Safety
+/// `input` is NULL or points to a readable input, `out` NULL or to a writable result.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn carry_estimate_f32(
+    input: *const crate::CarryEstimateInputF32,
+    out: *mut crate::CarryEstimateResultF32,
+) -> CarryError {
+    // SAFETY: the caller's contract, forwarded.
+    unsafe { estimate_entry(input, out) }
+}
+
+/// Club data from ball data, double precision (see `carry_estimate_f32`).
+///
+/// # Safety
+/// As `carry_estimate_f32`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn carry_estimate_f64(
+    input: *const crate::CarryEstimateInputF64,
+    out: *mut crate::CarryEstimateResultF64,
+) -> CarryError {
+    // SAFETY: the caller's contract, forwarded.
+    unsafe { estimate_entry(input, out) }
+}

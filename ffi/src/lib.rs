@@ -25,6 +25,7 @@ extern crate std;
 
 pub mod club;
 pub mod error;
+pub mod estimate;
 pub mod flight;
 pub mod impact;
 mod ptr;
@@ -93,6 +94,15 @@ pub type CarryShotInputF64 = CarryShotInput<f64>;
 pub type CarryShotResultF32 = CarryShotResult<f32>;
 /// Shot result in double precision.
 pub type CarryShotResultF64 = CarryShotResult<f64>;
+
+/// Estimate input in single precision.
+pub type CarryEstimateInputF32 = estimate::CarryEstimateInput<f32>;
+/// Estimate input in double precision.
+pub type CarryEstimateInputF64 = estimate::CarryEstimateInput<f64>;
+/// Estimate result in single precision.
+pub type CarryEstimateResultF32 = estimate::CarryEstimateResult<f32>;
+/// Estimate result in double precision.
+pub type CarryEstimateResultF64 = estimate::CarryEstimateResult<f64>;
 
 mod api;
 mod defaults;

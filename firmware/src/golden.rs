@@ -68,4 +68,15 @@ pub struct GroundHost {
     pub host_f64: Host<{ crate::ground_cases::GROUND_OUTPUTS }>,
 }
 
+/// One estimate (issue 23) and the host's results (f32, f64).
+#[derive(Debug, Clone, Copy)]
+pub struct EstimateHost {
+    /// Case name ([`crate::estimate_cases::ESTIMATE_CASES`], same order).
+    pub name: &'static str,
+    /// Host result in f32.
+    pub host_f32: Host<{ crate::estimate_cases::ESTIMATE_OUTPUTS }>,
+    /// Host result in f64.
+    pub host_f64: Host<{ crate::estimate_cases::ESTIMATE_OUTPUTS }>,
+}
+
 include!(concat!(env!("OUT_DIR"), "/golden_data.rs"));

@@ -11,6 +11,7 @@ use defmt_semihosting as _; // the global defmt logger: frames go out through SY
 
 pub mod cases;
 pub mod cost;
+pub mod estimate_cases;
 pub mod golden;
 pub mod ground_cases;
 pub mod shot;

@@ -18,7 +18,8 @@ use carry_firmware as _;
 
 use carry_core::Real;
 use carry_firmware::cases::{self, FLIGHT_NAMES, IMPACT_NAMES, SOLVERS, VARIANTS};
-use carry_firmware::golden::{Expected, FLIGHT, GROUND, Host, IMPACT};
+use carry_firmware::estimate_cases::{ESTIMATE_CASES, ESTIMATE_NAMES};
+use carry_firmware::golden::{ESTIMATE, Expected, FLIGHT, GROUND, Host, IMPACT};
 use carry_firmware::ground_cases::{GROUND_CASES, GROUND_NAMES};
 
 /// A precision the suite runs in.
@@ -147,6 +148,27 @@ fn calibrated_bit_identity<T: Precision>(
         "flight {=str} tour2023: {=u32} flights, {=u32} differ from the host",
         T::NAME,
         FLIGHT.len() as u32,
+        differ
+    );
+    defmt::assert_eq!(differ, 0);
+}
+
+/// Estimates of club data from ball data (issue 23), bit for bit against the host.
+fn estimate_bit_identity<T: Precision>(
+    host: impl Fn(&carry_firmware::golden::EstimateHost) -> &Host<26>,
+) {
+    let mut differ = 0u32;
+    for (case, h) in ESTIMATE_CASES.iter().zip(ESTIMATE) {
+        defmt::assert_eq!(case.name, h.name);
+        let target = case.outputs::<T>();
+        if !identical(case.name, "default", &ESTIMATE_NAMES, &target, host(h)) {
+            differ += 1;
+        }
+    }
+    defmt::info!(
+        "estimate {=str}: {=usize} cases, {=u32} differ from the host",
+        T::NAME,
+        ESTIMATE_CASES.len(),
         differ
     );
     defmt::assert_eq!(differ, 0);
@@ -312,6 +334,16 @@ mod tests {
     #[test]
     fn ground_f64_bit_identical_to_host() {
         ground_bit_identity::<f64>(|c| &c.host_f64);
+    }
+
+    #[test]
+    fn estimate_f32_bit_identical_to_host() {
+        estimate_bit_identity::<f32>(|c| &c.host_f32);
+    }
+
+    #[test]
+    fn estimate_f64_bit_identical_to_host() {
+        estimate_bit_identity::<f64>(|c| &c.host_f64);
     }
 
     /// The host suite's tolerances: 1e-9 relative in f64, 4e-6 in f32.

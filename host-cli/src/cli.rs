@@ -78,6 +78,10 @@ pub enum Command {
     /// A launch's carry in standard conditions (sea level, 21 °C, 50 % RH, no wind), and back.
     #[command(after_help = AFTER_HELP)]
     Normalize(Box<crate::analyses::normalize::NormalizeCmd>),
+    /// Club data from ball data: face, path, dynamic loft, attack, strike location and club
+    /// speed, each with its 1σ (the impact model run backwards; docs/estimate.md).
+    #[command(after_help = AFTER_HELP)]
+    Estimate(Box<crate::analyses::estimate::EstimateCmd>),
 }
 
 fn finite(s: &str) -> Result<f64, String> {
@@ -474,6 +478,15 @@ pub enum BatchCmd {
         batch: BatchArgs,
         #[command(flatten)]
         cmd: ShotCmd,
+    },
+    /// Many estimates of club data from ball data: launch columns (+ any measured club
+    /// columns) → face_angle_deg, club_path_deg, dynamic_loft_deg, … each with *_sd.
+    #[command(after_help = AFTER_HELP)]
+    Estimate {
+        #[command(flatten)]
+        batch: BatchArgs,
+        #[command(flatten)]
+        cmd: Box<crate::analyses::estimate::EstimateCmd>,
     },
 }
 

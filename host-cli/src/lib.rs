@@ -181,6 +181,9 @@ fn dispatch(cli: Cli) -> Result<(), Failure> {
                     (Mode::Flight, batch, cmd.resolve()?, &cmd.output)
                 }
                 BatchCmd::Shot { batch, cmd } => (Mode::Shot, batch, cmd.resolve()?, &cmd.output),
+                BatchCmd::Estimate { batch, cmd } => {
+                    return crate::analyses::estimate::batch(batch, cmd);
+                }
             };
             batch::run(&batch::Job {
                 mode,
@@ -215,6 +218,7 @@ fn dispatch(cli: Cli) -> Result<(), Failure> {
         Command::Sweep(c) => write_stdout(c.run()?.as_bytes()),
         Command::Dispersion(c) => write_stdout(c.run()?.as_bytes()),
         Command::Normalize(c) => write_stdout(c.run()?.as_bytes()),
+        Command::Estimate(c) => write_stdout(c.run()?.as_bytes()),
         Command::Bench(BenchCmd::Accuracy {
             json,
             svg,

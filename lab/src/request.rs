@@ -634,3 +634,179 @@ pub fn normalize(p: &Params, n: &Numerics, to: To) -> Result<Normalized, Failure
         Precision::F64 => run_in::<f64>(p, n, to),
     }
 }
+
+// ---------------------------------------------------------------- estimate
+
+/// What the launch monitor measured of the club, for [`estimate`] (`None`: not measured).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct MeasuredClub {
+    /// Club speed (m/s).
+    pub club_speed_mps: Option<f64>,
+    /// Attack angle (deg).
+    pub attack_angle_deg: Option<f64>,
+    /// Club path (deg).
+    pub club_path_deg: Option<f64>,
+    /// Face angle at the contact point (deg).
+    pub face_angle_deg: Option<f64>,
+    /// Dynamic loft at the contact point (deg).
+    pub dynamic_loft_deg: Option<f64>,
+}
+
+/// The estimated delivery (issue 23; TrackMan's convention), each datum with its 1σ, the
+/// residuals (modelled − measured ball data) and the iterations. Degrees for angles, SI
+/// otherwise.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct EstimateRecord {
+    /// face angle (deg).
+    pub face_angle_deg: f64,
+    /// 1σ of the face angle (deg).
+    pub face_angle_deg_sd: f64,
+    /// club path (deg).
+    pub club_path_deg: f64,
+    /// 1σ of the club path (deg).
+    pub club_path_deg_sd: f64,
+    /// face to path (deg).
+    pub face_to_path_deg: f64,
+    /// 1σ of the face to path (deg).
+    pub face_to_path_deg_sd: f64,
+    /// dynamic loft (deg).
+    pub dynamic_loft_deg: f64,
+    /// 1σ of the dynamic loft (deg).
+    pub dynamic_loft_deg_sd: f64,
+    /// attack angle (deg).
+    pub attack_angle_deg: f64,
+    /// 1σ of the attack angle (deg).
+    pub attack_angle_deg_sd: f64,
+    /// spin loft (deg).
+    pub spin_loft_deg: f64,
+    /// 1σ of the spin loft (deg).
+    pub spin_loft_deg_sd: f64,
+    /// impact toe (m).
+    pub impact_toe_m: f64,
+    /// 1σ of the impact toe (m).
+    pub impact_toe_m_sd: f64,
+    /// impact height (m).
+    pub impact_height_m: f64,
+    /// 1σ of the impact height (m).
+    pub impact_height_m_sd: f64,
+    /// club speed (m/s).
+    pub club_speed_mps: f64,
+    /// 1σ of the club speed (m/s).
+    pub club_speed_mps_sd: f64,
+    /// smash factor.
+    pub smash_factor: f64,
+    /// 1σ of the smash factor.
+    pub smash_factor_sd: f64,
+    /// Whether the club speed was estimated (not measured).
+    pub club_speed_estimated: bool,
+    /// residual ball speed (m/s).
+    pub residual_ball_speed_mps: f64,
+    /// residual launch angle (deg).
+    pub residual_launch_angle_deg: f64,
+    /// residual launch direction (deg).
+    pub residual_launch_direction_deg: f64,
+    /// residual spin (rpm).
+    pub residual_spin_rpm: f64,
+    /// residual spin axis (deg).
+    pub residual_spin_axis_deg: f64,
+    /// Levenberg–Marquardt iterations used.
+    pub iterations: u8,
+}
+
+/// Estimates the club delivery of `p`'s club (preset and overrides) from `p`'s launch (the
+/// measured ball data) and the `club` data measured, with the preset's default settings
+/// ([`carry_core::estimate::Settings::typical`]), in `n`'s precision.
+///
+/// # Errors
+/// Bad options, measurements out of range, or no estimate (input: exit 2).
+pub fn estimate(p: &Params, n: &Numerics, club: &MeasuredClub) -> Result<EstimateRecord, Failure> {
+    use carry_core::estimate::{self as est, BallData, ClubData, Settings};
+    use carry_core::real::lit;
+    fn run_in<T: Real>(p: &Params, club: &MeasuredClub) -> Result<EstimateRecord, Failure> {
+        let head = compute::club::<T>(&p.club)?;
+        let ball = compute::ball::<T>(p)?;
+        let (motion, _) = compute::launch_motion::<T>(p)?;
+        let rad = |d: Option<f64>| d.map(|d| lit::<T>(d.to_radians()));
+        let data = ClubData {
+            club_speed_mps: club.club_speed_mps.map(lit::<T>),
+            attack_angle_rad: rad(club.attack_angle_deg),
+            club_path_rad: rad(club.club_path_deg),
+            face_angle_rad: rad(club.face_angle_deg),
+            dynamic_loft_rad: rad(club.dynamic_loft_deg),
+        };
+        let settings = Settings::<T>::typical(&p.club.preset.typical);
+        let e = est::estimate(
+            &head,
+            &ball,
+            &BallData::from_motion(&motion),
+            &data,
+            &settings,
+        )
+        .map_err(InputError::from)?;
+        let (v, s, r) = (e.value, e.sd, e.residual);
+        let d = |x: T| to_f64(x).to_degrees();
+        let f = to_f64::<T>;
+        Ok(EstimateRecord {
+            face_angle_deg: d(v.face_angle_rad),
+            face_angle_deg_sd: d(s.face_angle_rad),
+            club_path_deg: d(v.club_path_rad),
+            club_path_deg_sd: d(s.club_path_rad),
+            face_to_path_deg: d(v.face_to_path_rad),
+            face_to_path_deg_sd: d(s.face_to_path_rad),
+            dynamic_loft_deg: d(v.dynamic_loft_rad),
+            dynamic_loft_deg_sd: d(s.dynamic_loft_rad),
+            attack_angle_deg: d(v.attack_angle_rad),
+            attack_angle_deg_sd: d(s.attack_angle_rad),
+            spin_loft_deg: d(v.spin_loft_rad),
+            spin_loft_deg_sd: d(s.spin_loft_rad),
+            impact_toe_m: f(v.impact_toe_m),
+            impact_toe_m_sd: f(s.impact_toe_m),
+            impact_height_m: f(v.impact_height_m),
+            impact_height_m_sd: f(s.impact_height_m),
+            club_speed_mps: f(v.club_speed_mps),
+            club_speed_mps_sd: f(s.club_speed_mps),
+            smash_factor: f(v.smash_factor),
+            smash_factor_sd: f(s.smash_factor),
+            club_speed_estimated: e.club_speed_estimated,
+            residual_ball_speed_mps: f(r.ball_speed_mps),
+            residual_launch_angle_deg: d(r.launch_angle_rad),
+            residual_launch_direction_deg: d(r.launch_direction_rad),
+            residual_spin_rpm: f(r.spin_radps) * 30.0 / core::f64::consts::PI,
+            residual_spin_axis_deg: d(r.spin_axis_rad),
+            iterations: e.iterations,
+        })
+    }
+    match n.precision {
+        Precision::F32 => run_in::<f32>(p, club),
+        Precision::F64 => run_in::<f64>(p, club),
+    }
+}
+
+/// [`estimate`] over many rows in parallel on `threads` workers (`None`: all cores), each
+/// row the parameters and measured club data of one shot, or the error its input had; the
+/// results in row order.
+///
+/// # Errors
+/// The thread pool cannot start.
+pub fn estimate_rows(
+    rows: &[Result<(Params, MeasuredClub), InputError>],
+    n: &Numerics,
+    threads: Option<usize>,
+) -> Result<Vec<Result<EstimateRecord, InputError>>, Failure> {
+    use rayon::prelude::*;
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads.unwrap_or(0))
+        .build()
+        .map_err(|e| Failure::Other(e.to_string()))?;
+    Ok(pool.install(|| {
+        rows.par_iter()
+            .map(|row| {
+                let (p, club) = row.as_ref().map_err(Clone::clone)?;
+                estimate(p, n, club).map_err(|e| match e {
+                    Failure::Input(e) => e,
+                    other => InputError::new("estimate", format!("{other:?}")),
+                })
+            })
+            .collect()
+    }))
+}

@@ -279,6 +279,44 @@ fn bounce_paths<T: Real>() -> T {
     }
 }
 
+/// The estimator (issue 23): club data from ball data, with and without club data, on
+/// opaque measurements, noise, prior and budget.
+fn estimate_paths<T: Real>() -> T {
+    use carry_core::estimate::{BallData, ClubData, Settings, estimate};
+    let preset = &carry_core::PRESETS[black_box(0_usize) % carry_core::PRESETS.len()];
+    let Ok(head) = preset.spec::<T>().validate() else {
+        return T::zero();
+    };
+    let ball = Ball::<T>::standard();
+    let measured = BallData {
+        ball_speed_mps: x(66.0),
+        launch_angle_rad: x(0.22),
+        launch_direction_rad: x(0.01),
+        spin_radps: x(280.0),
+        spin_axis_rad: x(0.05),
+    };
+    let mut settings = Settings::<T>::typical(&preset.typical);
+    settings.noise.ball.spin_radps = x(7.8);
+    settings.prior.sd.club_path_rad = x(0.08);
+    settings.max_iterations = black_box(30);
+    settings.tolerance = x(0.1);
+    let club = ClubData {
+        club_speed_mps: if black_box(true) { Some(x(45.0)) } else { None },
+        attack_angle_rad: if black_box(false) {
+            Some(x(0.01))
+        } else {
+            None
+        },
+        club_path_rad: if black_box(false) { Some(x(0.0)) } else { None },
+        face_angle_rad: if black_box(false) { Some(x(0.0)) } else { None },
+        dynamic_loft_rad: if black_box(false) { Some(x(0.2)) } else { None },
+    };
+    match estimate(&head, &ball, &measured, &club, &settings) {
+        Ok(e) => e.value.face_angle_rad + e.sd.impact_height_m + e.residual.spin_radps,
+        Err(_) => T::one(),
+    }
+}
+
 #[cortex_m_rt::entry]
 fn main() -> ! {
     // The negative control (`--features canary`): an index the optimiser cannot check, so
@@ -292,6 +330,8 @@ fn main() -> ! {
         black_box(flight_paths::<f64>());
         black_box(bounce_paths::<f32>());
         black_box(bounce_paths::<f64>());
+        black_box(estimate_paths::<f32>());
+        black_box(estimate_paths::<f64>());
     }
 }
 

@@ -280,6 +280,91 @@ fn suite<T: Real>(ticks: &Ticks, k: &mut u32, p: &str) {
             })
         });
     }
+    // Club data from ball data (issue 23): the driver preset, default settings, an
+    // everyday shot's ball data (face 1.2° open, path 2.5° in-to-out, loft 12°, attack
+    // −1.5°, 8 mm toward the toe, 4 mm up) with its club speed. `evals` counts iterations.
+    let preset = &carry_core::PRESETS[0];
+    let est_club = black_box(preset.spec::<T>())
+        .validate()
+        .unwrap_or_else(|_| carry_firmware::exit(1));
+    let truth = carry_core::estimate::Unknowns {
+        face_angle_rad: carry_core::units::deg(lit(1.2)),
+        club_path_rad: carry_core::units::deg(lit(2.5)),
+        dynamic_loft_rad: carry_core::units::deg(lit(12.0)),
+        attack_angle_rad: carry_core::units::deg(lit(-1.5)),
+        impact_toe_m: lit(0.008),
+        impact_height_m: lit(0.004),
+        club_speed_mps: lit(45.0),
+    };
+    let truth = black_box(truth);
+    op(
+        ticks,
+        k,
+        label!("estimate: one forward model evaluation (predict)"),
+        10,
+        &mut || carry_core::estimate::predict(&est_club, &ball, &truth).map(|_| (0, f64::NAN)),
+    );
+    let measured = black_box(
+        carry_core::estimate::predict(&est_club, &ball, &truth)
+            .unwrap_or_else(|_| carry_firmware::exit(1)),
+    );
+    let settings = black_box(carry_core::estimate::Settings::<T>::typical(
+        &preset.typical,
+    ));
+    let club_data = black_box(carry_core::estimate::ClubData {
+        club_speed_mps: Some(truth.club_speed_mps),
+        ..carry_core::estimate::ClubData::default()
+    });
+    op(
+        ticks,
+        k,
+        label!("ESTIMATE: club data from ball data + club speed (driver)"),
+        1,
+        &mut || {
+            carry_core::estimate::estimate(&est_club, &ball, &measured, &club_data, &settings)
+                .map(|e| (u32::from(e.iterations), f64::NAN))
+        },
+    );
+    // a harder shot, 1.5–2σ of the prior in every datum (more iterations)
+    let hard = black_box(carry_core::estimate::Unknowns {
+        face_angle_rad: carry_core::units::deg(lit(-4.5)),
+        club_path_rad: carry_core::units::deg(lit(6.0)),
+        dynamic_loft_rad: carry_core::units::deg(lit(17.0)),
+        attack_angle_rad: carry_core::units::deg(lit(4.0)),
+        impact_toe_m: lit(-0.018),
+        impact_height_m: lit(-0.009),
+        club_speed_mps: lit(40.0),
+    });
+    let hard_measured = black_box(
+        carry_core::estimate::predict(&est_club, &ball, &hard)
+            .unwrap_or_else(|_| carry_firmware::exit(1)),
+    );
+    let hard_club = black_box(carry_core::estimate::ClubData {
+        club_speed_mps: Some(hard.club_speed_mps),
+        ..carry_core::estimate::ClubData::default()
+    });
+    op(
+        ticks,
+        k,
+        label!("ESTIMATE: a 1.5-2 sigma drive, ball data + club speed"),
+        1,
+        &mut || {
+            carry_core::estimate::estimate(&est_club, &ball, &hard_measured, &hard_club, &settings)
+                .map(|e| (u32::from(e.iterations), f64::NAN))
+        },
+    );
+    let ball_only = black_box(carry_core::estimate::ClubData::<T>::default());
+    op(
+        ticks,
+        k,
+        label!("ESTIMATE: club data from ball data only (driver)"),
+        1,
+        &mut || {
+            carry_core::estimate::estimate(&est_club, &ball, &measured, &ball_only, &settings)
+                .map(|e| (u32::from(e.iterations), f64::NAN))
+        },
+    );
+
     let integrator = black_box(Integrator::<T>::default());
     op(
         ticks,

@@ -3,6 +3,7 @@
 //! SVG. All logic lives in carry-lab; this is parsing and formatting.
 
 pub mod dispersion;
+pub mod estimate;
 pub mod normalize;
 pub mod optimize;
 mod output;

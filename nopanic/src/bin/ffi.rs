@@ -121,6 +121,32 @@ fn paths() -> u32 {
             opaque(&mut r_flight64),
         ));
     }
+    // the estimator (issue 23)
+    let mut est32 = core::mem::MaybeUninit::<CarryEstimateInputF32>::zeroed();
+    let mut est64 = core::mem::MaybeUninit::<CarryEstimateInputF64>::zeroed();
+    let mut r_est32 = opaque(carry_ffi::estimate::CarryEstimateResult::<f32>::default());
+    let mut r_est64 = opaque(carry_ffi::estimate::CarryEstimateResult::<f64>::default());
+    // SAFETY: every pointer is NULL or points to a live value of its type; the zeroed
+    // inputs are plain numbers (any bit pattern is a valid input).
+    unsafe {
+        add(carry_estimate_input_default_f32(
+            name,
+            opaque(est32.as_mut_ptr()),
+        ));
+        add(carry_estimate_input_default_f64(
+            name,
+            opaque(est64.as_mut_ptr()),
+        ));
+        add(carry_estimate_f32(
+            opaque(est32.as_ptr()),
+            opaque(&mut r_est32),
+        ));
+        add(carry_estimate_f64(
+            opaque(est64.as_ptr()),
+            opaque(&mut r_est64),
+        ));
+    }
+    black_box((r_est32, r_est64));
     acc = acc.wrapping_add(carry_club_preset_count());
     acc = acc.wrapping_add(opaque(carry_club_preset_name(index)) as usize as u32);
     acc = acc.wrapping_add(opaque(carry_error_message(opaque(index))) as usize as u32);

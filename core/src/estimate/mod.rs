@@ -1,0 +1,452 @@
+//! Club data from ball data: the impact model run backwards (issue 23).
+//!
+//! A launch monitor that sees only the ball measures five numbers `y` (ball speed, launch
+//! angle, launch direction, spin rate, spin axis), perhaps with some club data. The club's
+//! delivery `x` (face angle, club path, dynamic loft, attack angle, strike toe and height,
+//! club speed; TrackMan's convention, [`crate::DeliveryConvention::TrackMan`]) is the
+//! maximum a posteriori estimate
+//!
+//! ```text
+//! x̂ = argmin  Σ_k ((f_k(x) − y_k)/σ_k)²  +  Σ_i ((x_i − μ_i)/s_i)²  +  Σ_j ((x_j − c_j)/σ_j)²
+//! ```
+//!
+//! with `f` the forward model (delivery → [`crate::impact::solve`], reduced solver, the
+//! club's contact law → launch metrics), `σ_k` the measurement noise ([`Noise`]), `μ, s`
+//! the prior ([`Prior`]: the club's typical delivery and a spread) and `c_j, σ_j` the club
+//! data the device measured ([`ClubData`]). Six or seven unknowns against five ball numbers:
+//! the prior keeps the problem well posed. Levenberg–Marquardt ([`solve`]) with a
+//! forward-difference Jacobian, the core's Gaussian elimination on the 7×7 normal matrix,
+//! and a bounded number of iterations; the 1σ of every datum comes from the posterior
+//! covariance `(Jᵀ W J + P)⁻¹` (Gaussian approximation at x̂). docs/estimate.md has the
+//! sources, identifiability and the accuracy against cost.
+
+mod model;
+mod solve;
+
+pub use model::{Unknowns, predict};
+
+use crate::ball::{Ball, BallMotion};
+use crate::club::ClubHead;
+use crate::error::{Error, Field, Reason, Result};
+use crate::launch::LaunchMetrics;
+use crate::presets::TypicalDelivery;
+use crate::real::{Real, lit};
+use crate::units::{deg, mph, rpm};
+use crate::validate::in_range as range;
+use core::f64::consts::{FRAC_PI_2, PI};
+
+/// The ball numbers a launch monitor measures (SI: m/s, rad, rad/s). Also the shape of
+/// their noise ([`Noise::ball`]) and of the estimate's residuals ([`Estimate::residual`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct BallData<T> {
+    /// Ball speed (m/s).
+    pub ball_speed_mps: T,
+    /// Launch angle, + up (rad).
+    pub launch_angle_rad: T,
+    /// Launch direction, + right (rad).
+    pub launch_direction_rad: T,
+    /// Total spin rate (rad/s).
+    pub spin_radps: T,
+    /// Spin axis, + tilted right (rad).
+    pub spin_axis_rad: T,
+}
+
+impl<T: Real> BallData<T> {
+    /// The launch-monitor numbers of a ball leaving with velocity and spin `motion` (the
+    /// spin component along the velocity, which a launch monitor does not report, is
+    /// dropped with the rest of the spin vector's direction beyond its axis tilt).
+    #[must_use]
+    pub fn from_motion(motion: &BallMotion<T>) -> Self {
+        Self::from_metrics(&LaunchMetrics::from_motion(motion, T::zero()))
+    }
+
+    /// The five measured numbers of `m`.
+    #[must_use]
+    pub fn from_metrics(m: &LaunchMetrics<T>) -> Self {
+        Self {
+            ball_speed_mps: m.ball_speed_mps,
+            launch_angle_rad: m.launch_angle_rad,
+            launch_direction_rad: m.launch_direction_rad,
+            spin_radps: m.spin_radps,
+            spin_axis_rad: m.spin_axis_rad,
+        }
+    }
+
+    /// As an array in the order of the fields.
+    #[must_use]
+    pub fn to_array(&self) -> [T; 5] {
+        [
+            self.ball_speed_mps,
+            self.launch_angle_rad,
+            self.launch_direction_rad,
+            self.spin_radps,
+            self.spin_axis_rad,
+        ]
+    }
+
+    /// From an array in the order of the fields.
+    #[must_use]
+    pub fn from_array(a: [T; 5]) -> Self {
+        let [
+            ball_speed_mps,
+            launch_angle_rad,
+            launch_direction_rad,
+            spin_radps,
+            spin_axis_rad,
+        ] = a;
+        Self {
+            ball_speed_mps,
+            launch_angle_rad,
+            launch_direction_rad,
+            spin_radps,
+            spin_axis_rad,
+        }
+    }
+
+    /// Checks a measurement: finite, ball speed in (0, 150] m/s, launch angle within ±90°,
+    /// launch direction within ±90°, spin in [0, 2,000] rad/s (19,099 rpm), spin axis
+    /// within ±180°.
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] naming the first bad number.
+    pub fn validated(&self) -> Result<Self> {
+        let half = lit::<T>(FRAC_PI_2);
+        let pi = lit::<T>(PI);
+        range(self.ball_speed_mps, T::zero(), lit(150.0), Field::BallSpeed)?;
+        if !(self.ball_speed_mps > T::zero()) {
+            return Err(Error::invalid(Field::BallSpeed, Reason::NotPositive));
+        }
+        range(self.launch_angle_rad, -half, half, Field::LaunchAngle)?;
+        range(
+            self.launch_direction_rad,
+            -half,
+            half,
+            Field::LaunchDirection,
+        )?;
+        range(self.spin_radps, T::zero(), lit(2000.0), Field::BallSpin)?;
+        range(self.spin_axis_rad, -pi, pi, Field::BallSpin)?;
+        Ok(*self)
+    }
+}
+
+/// What the device measured of the club (each `None` when not measured). SI.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct ClubData<T> {
+    /// Club head speed (m/s).
+    pub club_speed_mps: Option<T>,
+    /// Attack angle, + up (rad).
+    pub attack_angle_rad: Option<T>,
+    /// Club path, + in-to-out (rad).
+    pub club_path_rad: Option<T>,
+    /// Face angle at the contact point, + open (rad).
+    pub face_angle_rad: Option<T>,
+    /// Dynamic loft at the contact point (rad).
+    pub dynamic_loft_rad: Option<T>,
+}
+
+impl<T> Default for ClubData<T> {
+    /// Nothing measured.
+    fn default() -> Self {
+        Self {
+            club_speed_mps: None,
+            attack_angle_rad: None,
+            club_path_rad: None,
+            face_angle_rad: None,
+            dynamic_loft_rad: None,
+        }
+    }
+}
+
+/// 1σ measurement noise of every number the estimator may be given.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct Noise<T> {
+    /// Of the ball numbers.
+    pub ball: BallData<T>,
+    /// Of the club numbers, in the order of [`Unknowns`] (the toe and height entries are
+    /// unused: no launch monitor of this kind measures the strike location).
+    pub club: Unknowns<T>,
+}
+
+impl<T: Real> Noise<T> {
+    /// The default noise, read as 1σ: engineering defaults of the order launch-monitor makers
+    /// state for their accuracy (docs/estimate.md §2; not a cited figure: set it from the
+    /// device's specification): ball speed 0.5 mph, launch angle 0.2°, launch direction 0.3°,
+    /// spin 3 % of 2,500 rpm (75 rpm), spin axis 1.5°; club speed 1 mph, attack and path
+    /// 1°, face 0.5°, dynamic loft 1°.
+    #[must_use]
+    pub fn launch_monitor() -> Self {
+        Self {
+            ball: BallData {
+                ball_speed_mps: mph(lit(0.5)),
+                launch_angle_rad: deg(lit(0.2)),
+                launch_direction_rad: deg(lit(0.3)),
+                spin_radps: rpm(lit(75.0)),
+                spin_axis_rad: deg(lit(1.5)),
+            },
+            club: Unknowns {
+                face_angle_rad: deg(lit(0.5)),
+                club_path_rad: deg(lit(1.0)),
+                dynamic_loft_rad: deg(lit(1.0)),
+                attack_angle_rad: deg(lit(1.0)),
+                impact_toe_m: lit(0.002),
+                impact_height_m: lit(0.002),
+                club_speed_mps: mph(lit(1.0)),
+            },
+        }
+    }
+
+    fn validated(&self) -> Result<Self> {
+        for s in self.ball.to_array().into_iter().chain(self.club.to_array()) {
+            if !(s.is_finite() && s > T::zero()) {
+                return Err(Error::invalid(Field::MeasurementNoise, Reason::NotPositive));
+            }
+        }
+        Ok(*self)
+    }
+}
+
+/// The prior on the delivery: independent Gaussians, mean and 1σ per unknown.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct Prior<T> {
+    /// Means.
+    pub mean: Unknowns<T>,
+    /// Spreads (1σ), all positive.
+    pub sd: Unknowns<T>,
+}
+
+/// Default prior spreads (amateur deliveries; docs/estimate.md §2) of face, path, dynamic
+/// loft, attack (deg): path 4.6° and attack 3.4° from the issue's trivial-rule errors on
+/// amateur TrackMan drives (mean |x − μ| = σ√(2/π)); face 3.5° and loft 3° estimates.
+pub const PRIOR_SD_DEG: [f64; 4] = [3.5, 4.6, 3.0, 3.4];
+/// Default prior spreads of the strike toe and height (m): estimates.
+pub const PRIOR_SD_STRIKE_M: [f64; 2] = [0.012, 0.008];
+/// Default prior spread of the club speed, as a fraction of the typical: an estimate.
+pub const PRIOR_SD_SPEED_FRACTION: f64 = 0.10;
+
+impl<T: Real> Prior<T> {
+    /// The prior of a club's typical delivery: square and centred across the face, the
+    /// typical speed, attack, dynamic loft and strike height, with the default spreads.
+    #[must_use]
+    pub fn typical(t: &TypicalDelivery) -> Self {
+        let [face, path, loft, attack] = PRIOR_SD_DEG;
+        let [toe, height] = PRIOR_SD_STRIKE_M;
+        Self {
+            mean: Unknowns {
+                face_angle_rad: T::zero(),
+                club_path_rad: T::zero(),
+                dynamic_loft_rad: deg(lit(t.dynamic_loft_deg)),
+                attack_angle_rad: deg(lit(t.attack_angle_deg)),
+                impact_toe_m: T::zero(),
+                impact_height_m: lit(t.impact_height_m),
+                club_speed_mps: lit(t.club_speed_mps),
+            },
+            sd: Unknowns {
+                face_angle_rad: deg(lit(face)),
+                club_path_rad: deg(lit(path)),
+                dynamic_loft_rad: deg(lit(loft)),
+                attack_angle_rad: deg(lit(attack)),
+                impact_toe_m: lit(toe),
+                impact_height_m: lit(height),
+                club_speed_mps: lit(t.club_speed_mps * PRIOR_SD_SPEED_FRACTION),
+            },
+        }
+    }
+
+    /// This prior with every spread multiplied by `factor` (`factor ≫ 1`: a prior that
+    /// does not bind).
+    #[must_use]
+    pub fn widened(&self, factor: T) -> Self {
+        Self {
+            mean: self.mean,
+            sd: Unknowns::from_array(self.sd.to_array().map(|s| s * factor)),
+        }
+    }
+
+    fn validated(&self) -> Result<Self> {
+        for m in self.mean.to_array() {
+            if !m.is_finite() {
+                return Err(Error::invalid(Field::PriorMean, Reason::NotFinite));
+            }
+        }
+        for s in self.sd.to_array() {
+            if !(s.is_finite() && s > T::zero()) {
+                return Err(Error::invalid(Field::PriorSpread, Reason::NotPositive));
+            }
+        }
+        Ok(*self)
+    }
+}
+
+/// The default iteration budget of [`Settings::max_iterations`].
+pub const MAX_ITERATIONS: u8 = 30;
+
+/// The default [`Settings::tolerance`]: stop when the Newton step is below 0.3 posterior σ
+/// (docs/estimate.md, "Accuracy against cost": tighter costs iterations, not accuracy).
+pub const TOLERANCE: f64 = 0.3;
+
+/// How to estimate: the noise, the prior and the iteration budget.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct Settings<T> {
+    /// Measurement noise.
+    pub noise: Noise<T>,
+    /// Prior on the delivery.
+    pub prior: Prior<T>,
+    /// Levenberg–Marquardt iterations (Jacobians) at most, 1..=100.
+    pub max_iterations: u8,
+    /// Stop when the Newton step's Mahalanobis length `√(δᵀ A δ)` (in posterior σ) is
+    /// below this, in (0, 1].
+    pub tolerance: T,
+}
+
+impl<T: Real> Settings<T> {
+    /// The defaults for a club with typical delivery `t`: [`Noise::launch_monitor`],
+    /// [`Prior::typical`], [`MAX_ITERATIONS`], [`TOLERANCE`].
+    #[must_use]
+    pub fn typical(t: &TypicalDelivery) -> Self {
+        Self {
+            noise: Noise::launch_monitor(),
+            prior: Prior::typical(t),
+            max_iterations: MAX_ITERATIONS,
+            tolerance: lit(TOLERANCE),
+        }
+    }
+}
+
+/// The estimated delivery (values or their 1σ, TrackMan's convention). SI.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct ClubEstimate<T> {
+    /// Face angle at the contact point, + open (rad).
+    pub face_angle_rad: T,
+    /// Club path, + in-to-out (rad).
+    pub club_path_rad: T,
+    /// Face to path, face − path (rad).
+    pub face_to_path_rad: T,
+    /// Dynamic loft at the contact point (rad).
+    pub dynamic_loft_rad: T,
+    /// Attack angle, + up (rad).
+    pub attack_angle_rad: T,
+    /// Spin loft, dynamic loft − attack angle (rad).
+    pub spin_loft_rad: T,
+    /// Strike location toward the toe from the face centre (m).
+    pub impact_toe_m: T,
+    /// Strike location up the face from the face centre (m).
+    pub impact_height_m: T,
+    /// Club head speed (m/s).
+    pub club_speed_mps: T,
+    /// Smash factor, modelled ball speed / club speed.
+    pub smash_factor: T,
+}
+
+impl<T: Copy> ClubEstimate<T> {
+    /// As an array in the order of the fields.
+    #[must_use]
+    pub fn to_array(&self) -> [T; 10] {
+        [
+            self.face_angle_rad,
+            self.club_path_rad,
+            self.face_to_path_rad,
+            self.dynamic_loft_rad,
+            self.attack_angle_rad,
+            self.spin_loft_rad,
+            self.impact_toe_m,
+            self.impact_height_m,
+            self.club_speed_mps,
+            self.smash_factor,
+        ]
+    }
+}
+
+/// The result of [`estimate`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct Estimate<T> {
+    /// The most probable delivery.
+    pub value: ClubEstimate<T>,
+    /// Its 1σ uncertainties (posterior covariance).
+    pub sd: ClubEstimate<T>,
+    /// How well the ball data is reproduced: modelled − measured (SI).
+    pub residual: BallData<T>,
+    /// Levenberg–Marquardt iterations used (Jacobians evaluated).
+    pub iterations: u8,
+    /// Whether the club speed was estimated (not measured).
+    pub club_speed_estimated: bool,
+}
+
+impl<T: Real> Estimate<T> {
+    /// The estimated delivery as a core [`crate::Delivery`] in TrackMan's convention (no
+    /// lie, no club spin): feed it to [`crate::Delivery::strike_in`] to see its launch.
+    #[must_use]
+    pub fn delivery(&self) -> crate::Delivery<T> {
+        let v = &self.value;
+        Unknowns {
+            face_angle_rad: v.face_angle_rad,
+            club_path_rad: v.club_path_rad,
+            dynamic_loft_rad: v.dynamic_loft_rad,
+            attack_angle_rad: v.attack_angle_rad,
+            impact_toe_m: v.impact_toe_m,
+            impact_height_m: v.impact_height_m,
+            club_speed_mps: v.club_speed_mps,
+        }
+        .delivery()
+    }
+}
+
+/// Estimates the delivery of `club` (its own contact law; the reduced solver) striking
+/// `ball` that produced the `measured` ball data, given what was `club_data` measured of
+/// the club, with `settings`.
+///
+/// # Errors
+/// [`Error::InvalidInput`] for a non-finite or out-of-range measurement, noise, prior or
+/// iteration budget; the forward model's errors at the start (e.g. [`Error::OffFace`] for
+/// a prior strike off the face); [`Error::IllPosed`] when the normal matrix is singular in
+/// the precision; [`Error::NoConvergence`] when the iteration budget runs out.
+pub fn estimate<T: Real>(
+    club: &ClubHead<T>,
+    ball: &Ball<T>,
+    measured: &BallData<T>,
+    club_data: &ClubData<T>,
+    settings: &Settings<T>,
+) -> Result<Estimate<T>> {
+    let measured = measured.validated()?;
+    let noise = settings.noise.validated()?;
+    let prior = settings.prior.validated()?;
+    if !(1..=100).contains(&settings.max_iterations) {
+        return Err(Error::invalid(Field::Iterations, Reason::OutOfRange));
+    }
+    let tolerance = settings.tolerance;
+    if !(tolerance > T::zero() && tolerance <= T::one()) {
+        return Err(Error::invalid(Field::Tolerance, Reason::OutOfRange));
+    }
+    let half = lit::<T>(FRAC_PI_2);
+    if let Some(v) = club_data.club_speed_mps {
+        range(v, T::zero(), lit(150.0), Field::ClubSpeed)?;
+        if !(v > T::zero()) {
+            return Err(Error::invalid(Field::ClubSpeed, Reason::NotPositive));
+        }
+    }
+    for (v, field) in [
+        (club_data.attack_angle_rad, Field::AttackAngle),
+        (club_data.club_path_rad, Field::ClubPath),
+        (club_data.face_angle_rad, Field::FaceAngle),
+        (club_data.dynamic_loft_rad, Field::DynamicLoft),
+    ] {
+        if let Some(v) = v {
+            range(v, -half, half, field)?;
+        }
+    }
+    solve::run(
+        &model::Model { club, ball },
+        &measured,
+        club_data,
+        &noise,
+        &prior,
+        settings.max_iterations,
+        tolerance,
+    )
+}

@@ -1,0 +1,484 @@
+//! Levenberg–Marquardt on the estimator's MAP problem (Nocedal & Wright, "Numerical
+//! Optimization", 2nd ed., §10.3; Marquardt 1963's diagonal scaling):
+//!
+//! ```text
+//! r(x) = (f(x) − y) / σ                       (5 normalised ball residuals)
+//! A    = Jᵀ J + Q,  g = Jᵀ r + Q (x − m)       (Q = diag(q), the prior and club data)
+//! (A + λ diag A) δ = −g,  x ← x + δ  if the cost  |r|² + (x − m)ᵀ Q (x − m)  falls
+//! ```
+//!
+//! The prior `N(μ, s²)` and a measured club datum `N(c, σ_c²)` on the same unknown combine
+//! into one quadratic term, `q = 1/s² + 1/σ_c²`, `m = (μ/s² + c/σ_c²)/q`. `J` is the forward
+//! difference of the normalised residuals with steps `√ε · unit`. Two additions to plain
+//! Levenberg–Marquardt, both for the prior-dominated directions where the residuals' own
+//! curvature matters: a secant estimate `S` of that curvature (Dennis, Gay & Welsch's
+//! NL2SOL update) added to `A` while the Newton step stays a descent direction, and a
+//! one-point line search along each accepted step. The iteration stops when the Newton
+//! step is below `tolerance` posterior σ (`√(−gᵀδ)`) or when no damping makes the cost fall
+//! (stationary to the precision); it fails with [`Error::NoConvergence`] after the budget.
+//! The posterior covariance is `A⁻¹` (Gauss–Newton) at the last Jacobian; each 1σ is
+//! `√(cᵀ A⁻¹ c)` for the datum's gradient `c`, from one Gaussian elimination per datum.
+
+use super::model::{Model, SPEED, Unknowns};
+use super::{BallData, ClubData, ClubEstimate, Estimate, Noise, Prior};
+use crate::error::{Error, Result};
+use crate::linalg::{Pivoting, solve_gauss};
+use crate::real::{Real, lit};
+use core::f64::consts::PI;
+use nalgebra::{SMatrix, SVector};
+
+type V7<T> = SVector<T, 7>;
+type M7<T> = SMatrix<T, 7, 7>;
+type Jacobian<T> = SMatrix<T, 5, 7>;
+
+/// Scale of each unknown (rad ×4, m ×2, m/s): finite-difference steps and the stopping
+/// test are `√ε` of these.
+const UNIT: [f64; 7] = [0.5, 0.5, 0.5, 0.5, 0.05, 0.05, 50.0];
+
+/// Damping: start, floor, growth on a rejected step, rejected steps per iteration.
+const LAMBDA_START: f64 = 1e-3;
+const LAMBDA_MIN: f64 = 1e-9;
+const LAMBDA_GROWTH: f64 = 10.0;
+const MAX_REJECTS: usize = 8;
+
+/// Line search along an accepted step: tried only for a predicted stretch above the
+/// minimum or below its inverse, capped at the maximum.
+const MIN_STRETCH: f64 = 1.2;
+const MAX_STRETCH: f64 = 8.0;
+
+/// The problem's data in the solver's normalised form.
+struct Problem<'a, T: Real> {
+    model: &'a Model<'a, T>,
+    y: [T; 5],
+    sigma: [T; 5],
+    /// Precision of the quadratic term on each unknown.
+    q: V7<T>,
+    /// Its centre.
+    m: V7<T>,
+}
+
+impl<T: Real> Problem<'_, T> {
+    /// Normalised residuals of a prediction.
+    fn residual(&self, f: &BallData<T>) -> SVector<T, 5> {
+        let d = difference(f, &self.y);
+        SVector::<T, 5>::from_fn(|i, _| {
+            let (Some(d), Some(s)) = (d.get(i), self.sigma.get(i)) else {
+                return T::zero();
+            };
+            *d / *s
+        })
+    }
+
+    fn cost(&self, r: &SVector<T, 5>, x: &V7<T>) -> T {
+        let dx = x - self.m;
+        r.norm_squared() + dx.component_mul(&dx).dot(&self.q)
+    }
+
+    fn predict(&self, x: &V7<T>) -> Result<BallData<T>> {
+        self.model.predict(&unknowns(x))
+    }
+}
+
+/// `f − y` per ball number, the spin axis wrapped into (−π, π].
+fn difference<T: Real>(f: &BallData<T>, y: &[T; 5]) -> [T; 5] {
+    let f = f.to_array();
+    let mut d = [T::zero(); 5];
+    for ((d, f), y) in d.iter_mut().zip(f).zip(y) {
+        *d = f - *y;
+    }
+    let pi = lit::<T>(PI);
+    if let Some(axis) = d.last_mut() {
+        if *axis > pi {
+            *axis -= pi + pi;
+        } else if *axis < -pi {
+            *axis += pi + pi;
+        }
+    }
+    d
+}
+
+fn unknowns<T: Real>(x: &V7<T>) -> Unknowns<T> {
+    Unknowns::from_array(core::array::from_fn(|i| {
+        x.get(i).copied().unwrap_or_else(T::zero)
+    }))
+}
+
+fn units<T: Real>() -> V7<T> {
+    let eps = T::default_epsilon().sqrt();
+    V7::from(UNIT.map(|u| lit::<T>(u) * eps))
+}
+
+pub(super) fn run<T: Real>(
+    model: &Model<'_, T>,
+    measured: &BallData<T>,
+    club_data: &ClubData<T>,
+    noise: &Noise<T>,
+    prior: &Prior<T>,
+    max_iterations: u8,
+    tolerance: T,
+) -> Result<Estimate<T>> {
+    let measured_club = [
+        club_data.face_angle_rad,
+        club_data.club_path_rad,
+        club_data.dynamic_loft_rad,
+        club_data.attack_angle_rad,
+        None,
+        None,
+        club_data.club_speed_mps,
+    ];
+    let mut q = [T::zero(); 7];
+    let mut m = [T::zero(); 7];
+    for ((((q, m), mu), s), (c, sc)) in q
+        .iter_mut()
+        .zip(m.iter_mut())
+        .zip(prior.mean.to_array())
+        .zip(prior.sd.to_array())
+        .zip(measured_club.iter().zip(noise.club.to_array()))
+    {
+        let mut precision = T::one() / (s * s);
+        let mut weighted = mu * precision;
+        if let Some(c) = c {
+            let pc = T::one() / (sc * sc);
+            precision += pc;
+            weighted += *c * pc;
+        }
+        *q = precision;
+        *m = weighted / precision;
+    }
+    // the spin axis of a slowly spinning ball is poorly defined: its noise grows by the
+    // spin's noise over the spin, σ_axis² + (σ_spin / spin)²
+    let mut sigma = noise.ball;
+    let spin = crate::real::larger(measured.spin_radps, sigma.spin_radps);
+    let wobble = sigma.spin_radps / spin;
+    sigma.spin_axis_rad = (sigma.spin_axis_rad * sigma.spin_axis_rad + wobble * wobble).sqrt();
+    let problem = Problem {
+        model,
+        y: measured.to_array(),
+        sigma: sigma.to_array(),
+        q: V7::from(q),
+        m: V7::from(m),
+    };
+    let start = start(&problem, measured, &measured_club)?;
+    let solution = iterate(&problem, start, max_iterations, tolerance)?;
+    posterior(&problem, &solution, club_data)
+}
+
+/// A good start: the centre `m`, moved so that its launch matches the measured one to
+/// first order (face by the launch direction, loft by the launch angle, speed by the ball
+/// speed) where the device did not measure that datum. One forward evaluation.
+fn start<T: Real>(
+    problem: &Problem<'_, T>,
+    measured: &BallData<T>,
+    measured_club: &[Option<T>; 7],
+) -> Result<V7<T>> {
+    let mut x = problem.m;
+    let f = problem.predict(&x)?;
+    let [face, _, loft, _, _, _, speed] = measured_club;
+    if face.is_none()
+        && let Some(v) = x.get_mut(0)
+    {
+        *v += measured.launch_direction_rad - f.launch_direction_rad;
+    }
+    if loft.is_none()
+        && let Some(v) = x.get_mut(2)
+    {
+        *v += measured.launch_angle_rad - f.launch_angle_rad;
+    }
+    if speed.is_none()
+        && f.ball_speed_mps > T::zero()
+        && let Some(v) = x.get_mut(SPEED)
+    {
+        *v *= measured.ball_speed_mps / f.ball_speed_mps;
+    }
+    Ok(x)
+}
+
+/// Where the iteration stopped.
+struct Solution<T: Real> {
+    /// The unknowns.
+    x: V7<T>,
+    /// The normal matrix `Jᵀ J + Q` of the last Jacobian (the posterior precision).
+    a: M7<T>,
+    /// The last Jacobian of the normalised residuals.
+    jac: Jacobian<T>,
+    /// The prediction at `x`.
+    f: BallData<T>,
+    /// Iterations (Jacobians) used.
+    iterations: u8,
+}
+
+/// The Levenberg–Marquardt loop: the solution, its normal matrix `A`, the Jacobian of the
+/// normalised residuals and the prediction at the solution.
+fn iterate<T: Real>(
+    problem: &Problem<'_, T>,
+    start: V7<T>,
+    max_iterations: u8,
+    tolerance: T,
+) -> Result<Solution<T>> {
+    let unit = units::<T>();
+    let mut x = start;
+    let mut f = problem.predict(&x)?;
+    let mut r = problem.residual(&f);
+    let mut cost = problem.cost(&r, &x);
+    let mut lambda = lit::<T>(LAMBDA_START);
+    let q = M7::from_diagonal(&problem.q);
+    // the secant estimate S of the residuals' own curvature Σ r_k ∇²r_k, and the previous
+    // iteration's Jacobian, gradient and step it is updated from
+    let mut secant = M7::<T>::zeros();
+    let mut previous: Option<(Jacobian<T>, V7<T>, V7<T>)> = None;
+    // the last Jacobian with Broyden's rank-one update along the last step: good enough to
+    // tell that the iteration has converged (and for the covariance), saving the seven
+    // forward evaluations of a fresh Jacobian at the end
+    let mut broyden: Option<Jacobian<T>> = None;
+    let weight = V7::from(UNIT.map(|u| T::one() / lit::<T>(u * u)));
+    for iteration in 1..=max_iterations {
+        if let Some(jb) = broyden.take() {
+            let jt = jb.transpose();
+            let a = jt * jb + q;
+            let g = jt * r + problem.q.component_mul(&(x - problem.m));
+            let (_, newton) = newton_step(&a, &mut secant, &g)?;
+            if -g.dot(&newton) <= tolerance * tolerance {
+                return Ok(Solution {
+                    x,
+                    a,
+                    jac: jb,
+                    f,
+                    iterations: iteration,
+                });
+            }
+        }
+        let jac = jacobian(problem, &x, &r, &unit)?;
+        let jt = jac.transpose();
+        let a = jt * jac + q;
+        let g = jt * r + problem.q.component_mul(&(x - problem.m));
+        if let Some((jp, gp, s)) = previous {
+            update_secant(&mut secant, &s, &(g - gp), &((jac - jp).transpose() * r));
+        }
+        let (model, newton) = newton_step(&a, &mut secant, &g)?;
+        // converged when the Newton step is below `tolerance` posterior σ: its Mahalanobis
+        // length² is the Newton decrement −gᵀδ
+        if -g.dot(&newton) <= tolerance * tolerance {
+            return Ok(Solution {
+                x,
+                a,
+                jac,
+                f,
+                iterations: iteration,
+            });
+        }
+        let mut accepted = None;
+        for _ in 0..MAX_REJECTS {
+            let mut damped = model + M7::from_diagonal(&(a.diagonal() * lambda));
+            let Ok(step) = solve_gauss(&mut damped, &(-g), Pivoting::Equilibrated) else {
+                lambda *= lit(LAMBDA_GROWTH);
+                continue;
+            };
+            let next = x + step;
+            if let Ok(fn_) = problem.predict(&next) {
+                let rn = problem.residual(&fn_);
+                let cn = problem.cost(&rn, &next);
+                if cn <= cost {
+                    accepted = Some((step, next, fn_, rn, cn));
+                    lambda = crate::real::larger(lambda / lit(LAMBDA_GROWTH), lit(LAMBDA_MIN));
+                    break;
+                }
+            }
+            lambda *= lit(LAMBDA_GROWTH);
+        }
+        let Some((step, mut next, mut fn_, mut rn, mut cn)) = accepted else {
+            // no damping lowers the cost: stationary to the precision
+            return Ok(Solution {
+                x,
+                a,
+                jac,
+                f,
+                iterations: iteration,
+            });
+        };
+        // Along the step the cost is c(t) ≈ c₀ + 2(gᵀδ) t + κ t²; fitted through c(1) its
+        // minimum t* = −gᵀδ / κ lies away from 1 where the Gauss–Newton model misjudges the
+        // curvature (the prior-dominated directions, where the residuals' own curvature
+        // counts): try it once.
+        let slope = (g + g).dot(&step); // the cost's gradient is 2g
+        let kappa = cn - cost - slope;
+        if slope < T::zero() && kappa > T::zero() {
+            let t = crate::real::smaller(-slope / (kappa + kappa), lit(MAX_STRETCH));
+            if t > lit(MIN_STRETCH) || t < lit(1.0 / MIN_STRETCH) {
+                let longer = step * t;
+                let far = x + longer;
+                if let Ok(ff) = problem.predict(&far) {
+                    let rf = problem.residual(&ff);
+                    let cf = problem.cost(&rf, &far);
+                    if cf < cn {
+                        (next, fn_, rn, cn) = (far, ff, rf, cf);
+                    }
+                }
+            }
+        }
+        let step = next - x;
+        let scaled = step.component_mul(&weight);
+        let norm = step.dot(&scaled);
+        if norm > T::zero() {
+            let update = (rn - r - jac * step) * (scaled.transpose() / norm);
+            if update.iter().all(|v| v.is_finite()) {
+                broyden = Some(jac + update);
+            }
+        }
+        previous = Some((jac, g, step));
+        x = next;
+        f = fn_;
+        r = rn;
+        cost = cn;
+    }
+    Err(Error::NoConvergence)
+}
+
+/// The Newton step of the model Hessian: Gauss–Newton's `a` plus the secant term where
+/// that keeps the step a descent direction (else the secant term is dropped).
+fn newton_step<T: Real>(a: &M7<T>, secant: &mut M7<T>, g: &V7<T>) -> Result<(M7<T>, V7<T>)> {
+    let model = a + *secant;
+    let mut normal = model;
+    match solve_gauss(&mut normal, &(-g), Pivoting::Equilibrated) {
+        Ok(d) if g.dot(&d) < T::zero() => Ok((model, d)),
+        _ => {
+            *secant = M7::zeros();
+            let mut normal = *a;
+            let d = solve_gauss(&mut normal, &(-g), Pivoting::Equilibrated)
+                .map_err(|_| Error::IllPosed)?;
+            Ok((*a, d))
+        }
+    }
+}
+
+/// The Dennis–Gay–Welsch secant update of `S ≈ Σ r_k ∇²r_k` (NL2SOL: Dennis, Gay &
+/// Welsch, ACM TOMS 7, 1981), with its sizing: for the step `s`, the change `y` of the
+/// (half) gradient and `y# = (J₊ − J)ᵀ r₊`, `S ← τS` with `τ = min(1, |sᵀy#| / |sᵀSs|)`,
+/// then `S₊ = S + (w yᵀ + y wᵀ)/yᵀs − (wᵀs) y yᵀ/(yᵀs)²`, `w = y# − S s`.
+fn update_secant<T: Real>(secant: &mut M7<T>, s: &V7<T>, y: &V7<T>, ysharp: &V7<T>) {
+    let sss = s.dot(&(*secant * s));
+    let ssy = s.dot(ysharp).abs();
+    if sss.abs() > ssy {
+        *secant *= ssy / sss.abs();
+    }
+    let ys = y.dot(s);
+    if !(ys > T::zero()) {
+        return;
+    }
+    let w = ysharp - *secant * s;
+    let update =
+        (w * y.transpose() + y * w.transpose()) / ys - (y * y.transpose()) * (w.dot(s) / (ys * ys));
+    if update.iter().all(|v| v.is_finite()) {
+        *secant += update;
+    }
+}
+
+/// Forward differences of the normalised residuals (a backward difference where the
+/// forward point is outside the model's domain).
+fn jacobian<T: Real>(
+    problem: &Problem<'_, T>,
+    x: &V7<T>,
+    r: &SVector<T, 5>,
+    unit: &V7<T>,
+) -> Result<Jacobian<T>> {
+    let mut jac = Jacobian::<T>::zeros();
+    for (i, (mut column, h)) in jac.column_iter_mut().zip(unit.iter()).enumerate() {
+        let h = *h;
+        let mut xp = *x;
+        if let Some(v) = xp.get_mut(i) {
+            *v += h;
+        }
+        let (rp, h) = match problem.predict(&xp) {
+            Ok(fp) => (problem.residual(&fp), h),
+            Err(_) => {
+                if let Some(v) = xp.get_mut(i) {
+                    *v -= h + h;
+                }
+                (problem.residual(&problem.predict(&xp)?), -h)
+            }
+        };
+        column.copy_from(&((rp - r) / h));
+    }
+    Ok(jac)
+}
+
+/// The posterior: value and 1σ of every datum, `√(cᵀ A⁻¹ c)` for its gradient `c`.
+fn posterior<T: Real>(
+    problem: &Problem<'_, T>,
+    solution: &Solution<T>,
+    club_data: &ClubData<T>,
+) -> Result<Estimate<T>> {
+    let Solution {
+        x,
+        a,
+        jac,
+        f,
+        iterations,
+    } = solution;
+    let sd = |c: V7<T>| -> Result<T> {
+        let mut m = *a;
+        let z = solve_gauss(&mut m, &c, Pivoting::Equilibrated).map_err(|_| Error::IllPosed)?;
+        let var = c.dot(&z);
+        Ok(if var > T::zero() {
+            var.sqrt()
+        } else {
+            T::zero()
+        })
+    };
+    let e = |i: usize| V7::<T>::from_fn(|k, _| if k == i { T::one() } else { T::zero() });
+    let u = unknowns(x);
+    let speed = u.club_speed_mps;
+    let ball_speed = f.ball_speed_mps;
+    let smash = if speed > T::zero() {
+        ball_speed / speed
+    } else {
+        T::zero()
+    };
+    // d smash / dx = (d ball speed / dx) / v − (ball speed / v²) e_v
+    let sigma_speed = problem.sigma.first().copied().unwrap_or_else(T::one);
+    let mut smash_gradient: V7<T> = jac.row(0).transpose() * sigma_speed;
+    if speed > T::zero() {
+        smash_gradient /= speed;
+        if let Some(g) = smash_gradient.get_mut(SPEED) {
+            *g -= smash / speed;
+        }
+    }
+    let value = ClubEstimate {
+        face_angle_rad: u.face_angle_rad,
+        club_path_rad: u.club_path_rad,
+        face_to_path_rad: u.face_angle_rad - u.club_path_rad,
+        dynamic_loft_rad: u.dynamic_loft_rad,
+        attack_angle_rad: u.attack_angle_rad,
+        spin_loft_rad: u.dynamic_loft_rad - u.attack_angle_rad,
+        impact_toe_m: u.impact_toe_m,
+        impact_height_m: u.impact_height_m,
+        club_speed_mps: speed,
+        smash_factor: smash,
+    };
+    let sd = ClubEstimate {
+        face_angle_rad: sd(e(0))?,
+        club_path_rad: sd(e(1))?,
+        face_to_path_rad: sd(e(0) - e(1))?,
+        dynamic_loft_rad: sd(e(2))?,
+        attack_angle_rad: sd(e(3))?,
+        spin_loft_rad: sd(e(2) - e(3))?,
+        impact_toe_m: sd(e(4))?,
+        impact_height_m: sd(e(5))?,
+        club_speed_mps: sd(e(SPEED))?,
+        smash_factor: sd(smash_gradient)?,
+    };
+    let all_finite = value
+        .to_array()
+        .iter()
+        .chain(sd.to_array().iter())
+        .all(|v| v.is_finite());
+    if !all_finite {
+        return Err(Error::IllPosed);
+    }
+    Ok(Estimate {
+        value,
+        sd,
+        residual: BallData::from_array(difference(f, &problem.y)),
+        iterations: *iterations,
+        club_speed_estimated: club_data.club_speed_mps.is_none(),
+    })
+}

@@ -1,0 +1,269 @@
+//! Club data from ball data (issue 23): the core's estimator (`carry_core::estimate`,
+//! docs/estimate.md) behind the C ABI.
+
+use crate::club::{CarryBall, CarryClub};
+use crate::error::Result;
+use carry_core::estimate::{
+    self, BallData, ClubData, ClubEstimate, Noise, Prior, Settings, Unknowns,
+};
+use carry_core::presets::Preset;
+use carry_core::real::Real;
+
+/// `CarryEstimateInput::measured` bit: the club speed was measured.
+pub const CARRY_MEASURED_CLUB_SPEED: u32 = 1;
+/// `CarryEstimateInput::measured` bit: the attack angle was measured.
+pub const CARRY_MEASURED_ATTACK_ANGLE: u32 = 2;
+/// `CarryEstimateInput::measured` bit: the club path was measured.
+pub const CARRY_MEASURED_CLUB_PATH: u32 = 4;
+/// `CarryEstimateInput::measured` bit: the face angle was measured.
+pub const CARRY_MEASURED_FACE_ANGLE: u32 = 8;
+/// `CarryEstimateInput::measured` bit: the dynamic loft was measured.
+pub const CARRY_MEASURED_DYNAMIC_LOFT: u32 = 16;
+
+/// The estimator's unknowns (TrackMan's convention; m/s, rad, m): also the shape of the
+/// prior's mean and spread and of the club measurements and their noise.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct CarryDeliveryData<T> {
+    /// Face angle at the contact point (rad, + open).
+    pub face_angle_rad: T,
+    /// Club path (rad, + in-to-out).
+    pub club_path_rad: T,
+    /// Dynamic loft at the contact point (rad).
+    pub dynamic_loft_rad: T,
+    /// Attack angle (rad, + up).
+    pub attack_angle_rad: T,
+    /// Strike toward the toe from the face centre (m).
+    pub impact_toe_m: T,
+    /// Strike up the face from the face centre (m).
+    pub impact_height_m: T,
+    /// Club head speed (m/s).
+    pub club_speed_mps: T,
+}
+
+/// The five ball numbers a launch monitor measures (m/s, rad, rad/s).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct CarryBallData<T> {
+    /// Ball speed (m/s).
+    pub ball_speed_mps: T,
+    /// Launch angle, + up (rad).
+    pub launch_angle_rad: T,
+    /// Launch direction, + right (rad).
+    pub launch_direction_rad: T,
+    /// Total spin (rad/s).
+    pub spin_radps: T,
+    /// Spin axis, + tilted right (rad).
+    pub spin_axis_rad: T,
+}
+
+/// What an estimate needs. Start from `carry_estimate_input_default_*`.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CarryEstimateInput<T> {
+    /// The club head.
+    pub club: CarryClub<T>,
+    /// The ball.
+    pub ball: CarryBall<T>,
+    /// The measured ball data.
+    pub measured_ball: CarryBallData<T>,
+    /// Which club data were measured: an OR of `CARRY_MEASURED_*` bits.
+    pub measured: u32,
+    /// The measured club data (only the fields `measured` names are read; strike location
+    /// unused).
+    pub measured_club: CarryDeliveryData<T>,
+    /// 1σ noise of the ball data.
+    pub ball_noise: CarryBallData<T>,
+    /// 1σ noise of the club data.
+    pub club_noise: CarryDeliveryData<T>,
+    /// Prior mean of the delivery.
+    pub prior_mean: CarryDeliveryData<T>,
+    /// Prior spread (1σ) of the delivery.
+    pub prior_sd: CarryDeliveryData<T>,
+    /// Iteration budget, 1..=100.
+    pub max_iterations: u32,
+    /// Stop when the Newton step is below this many posterior σ, in (0, 1].
+    pub tolerance: T,
+}
+
+/// The estimated delivery, or its 1σ (rad, m, m/s).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct CarryClubEstimate<T> {
+    /// Face angle at the contact point (rad).
+    pub face_angle_rad: T,
+    /// Club path (rad).
+    pub club_path_rad: T,
+    /// Face to path (rad).
+    pub face_to_path_rad: T,
+    /// Dynamic loft at the contact point (rad).
+    pub dynamic_loft_rad: T,
+    /// Attack angle (rad).
+    pub attack_angle_rad: T,
+    /// Spin loft, dynamic loft − attack (rad).
+    pub spin_loft_rad: T,
+    /// Strike toward the toe (m).
+    pub impact_toe_m: T,
+    /// Strike up the face (m).
+    pub impact_height_m: T,
+    /// Club speed (m/s).
+    pub club_speed_mps: T,
+    /// Smash factor.
+    pub smash_factor: T,
+}
+
+/// The result of an estimate.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct CarryEstimateResult<T> {
+    /// The most probable delivery.
+    pub value: CarryClubEstimate<T>,
+    /// Its 1σ.
+    pub sd: CarryClubEstimate<T>,
+    /// Modelled − measured ball data.
+    pub residual: CarryBallData<T>,
+    /// Iterations used.
+    pub iterations: u32,
+    /// 1 when the club speed was estimated, 0 when measured.
+    pub club_speed_estimated: u32,
+}
+
+fn to_core<T: Copy>(d: &CarryDeliveryData<T>) -> Unknowns<T> {
+    Unknowns {
+        face_angle_rad: d.face_angle_rad,
+        club_path_rad: d.club_path_rad,
+        dynamic_loft_rad: d.dynamic_loft_rad,
+        attack_angle_rad: d.attack_angle_rad,
+        impact_toe_m: d.impact_toe_m,
+        impact_height_m: d.impact_height_m,
+        club_speed_mps: d.club_speed_mps,
+    }
+}
+
+fn from_core<T: Copy>(d: &Unknowns<T>) -> CarryDeliveryData<T> {
+    CarryDeliveryData {
+        face_angle_rad: d.face_angle_rad,
+        club_path_rad: d.club_path_rad,
+        dynamic_loft_rad: d.dynamic_loft_rad,
+        attack_angle_rad: d.attack_angle_rad,
+        impact_toe_m: d.impact_toe_m,
+        impact_height_m: d.impact_height_m,
+        club_speed_mps: d.club_speed_mps,
+    }
+}
+
+fn ball_core<T: Copy>(b: &CarryBallData<T>) -> BallData<T> {
+    BallData {
+        ball_speed_mps: b.ball_speed_mps,
+        launch_angle_rad: b.launch_angle_rad,
+        launch_direction_rad: b.launch_direction_rad,
+        spin_radps: b.spin_radps,
+        spin_axis_rad: b.spin_axis_rad,
+    }
+}
+
+fn ball_c<T: Copy>(b: &BallData<T>) -> CarryBallData<T> {
+    CarryBallData {
+        ball_speed_mps: b.ball_speed_mps,
+        launch_angle_rad: b.launch_angle_rad,
+        launch_direction_rad: b.launch_direction_rad,
+        spin_radps: b.spin_radps,
+        spin_axis_rad: b.spin_axis_rad,
+    }
+}
+
+fn estimate_c<T: Copy>(e: &ClubEstimate<T>) -> CarryClubEstimate<T> {
+    CarryClubEstimate {
+        face_angle_rad: e.face_angle_rad,
+        club_path_rad: e.club_path_rad,
+        face_to_path_rad: e.face_to_path_rad,
+        dynamic_loft_rad: e.dynamic_loft_rad,
+        attack_angle_rad: e.attack_angle_rad,
+        spin_loft_rad: e.spin_loft_rad,
+        impact_toe_m: e.impact_toe_m,
+        impact_height_m: e.impact_height_m,
+        club_speed_mps: e.club_speed_mps,
+        smash_factor: e.smash_factor,
+    }
+}
+
+impl<T: Real> CarryEstimateInput<T> {
+    /// The defaults for `preset`: its club, the standard ball, the default noise and the
+    /// preset's typical prior (`Settings::typical`), nothing measured, zero ball data.
+    #[must_use]
+    pub fn typical(preset: &Preset) -> Self {
+        let s = Settings::<T>::typical(&preset.typical);
+        Self {
+            club: CarryClub::from_spec(&preset.spec()),
+            ball: CarryBall::standard(),
+            measured_ball: CarryBallData::default_zero(),
+            measured: 0,
+            measured_club: CarryDeliveryData::default_zero(),
+            ball_noise: ball_c(&s.noise.ball),
+            club_noise: from_core(&s.noise.club),
+            prior_mean: from_core(&s.prior.mean),
+            prior_sd: from_core(&s.prior.sd),
+            max_iterations: u32::from(s.max_iterations),
+            tolerance: s.tolerance,
+        }
+    }
+}
+
+impl<T: Real> CarryBallData<T> {
+    fn default_zero() -> Self {
+        ball_c(&BallData::from_array([T::zero(); 5]))
+    }
+}
+
+impl<T: Real> CarryDeliveryData<T> {
+    fn default_zero() -> Self {
+        from_core(&Unknowns::from_array([T::zero(); 7]))
+    }
+}
+
+/// The estimate of `input`.
+///
+/// # Errors
+/// The core's errors (`CARRY_ERR_INVALID_INPUT` for a bad measurement, noise, prior,
+/// budget or tolerance; `CARRY_ERR_OTHER` for no convergence or an ill-posed problem).
+pub fn run<T: Real>(input: &CarryEstimateInput<T>) -> Result<CarryEstimateResult<T>> {
+    let club = input.club.spec()?.validate()?;
+    let ball = input.ball.ball()?;
+    let m = &input.measured_club;
+    let has = |bit: u32| input.measured & bit != 0;
+    let pick = |bit: u32, v: T| if has(bit) { Some(v) } else { None };
+    let data = ClubData {
+        club_speed_mps: pick(CARRY_MEASURED_CLUB_SPEED, m.club_speed_mps),
+        attack_angle_rad: pick(CARRY_MEASURED_ATTACK_ANGLE, m.attack_angle_rad),
+        club_path_rad: pick(CARRY_MEASURED_CLUB_PATH, m.club_path_rad),
+        face_angle_rad: pick(CARRY_MEASURED_FACE_ANGLE, m.face_angle_rad),
+        dynamic_loft_rad: pick(CARRY_MEASURED_DYNAMIC_LOFT, m.dynamic_loft_rad),
+    };
+    let settings = Settings {
+        noise: Noise {
+            ball: ball_core(&input.ball_noise),
+            club: to_core(&input.club_noise),
+        },
+        prior: Prior {
+            mean: to_core(&input.prior_mean),
+            sd: to_core(&input.prior_sd),
+        },
+        // out of 1..=100 (also past u8): the core's Iterations error
+        max_iterations: u8::try_from(input.max_iterations).unwrap_or(0),
+        tolerance: input.tolerance,
+    };
+    let e = estimate::estimate(
+        &club,
+        &ball,
+        &ball_core(&input.measured_ball),
+        &data,
+        &settings,
+    )?;
+    Ok(CarryEstimateResult {
+        value: estimate_c(&e.value),
+        sd: estimate_c(&e.sd),
+        residual: ball_c(&e.residual),
+        iterations: u32::from(e.iterations),
+        club_speed_estimated: u32::from(e.club_speed_estimated),
+    })
+}

@@ -1,0 +1,115 @@
+//! The C API's estimator (issue 23) through its `extern "C"` entry points: the core's
+//! result bit for bit, the ball data of a known delivery estimated back within 2σ, and the
+//! error codes.
+
+use carry_core::Ball;
+use carry_core::estimate::{ClubData, Settings, Unknowns, estimate, predict};
+use carry_core::presets::Preset;
+use carry_core::units::deg;
+use carry_ffi::error::CarryError::*;
+use carry_ffi::estimate::{CARRY_MEASURED_CLUB_SPEED, CarryEstimateResult};
+use carry_ffi::*;
+use core::ptr::{null, null_mut};
+
+fn driver_input<T: carry_core::Real>(
+    default: unsafe extern "C" fn(
+        *const core::ffi::c_char,
+        *mut estimate::CarryEstimateInput<T>,
+    ) -> error::CarryError,
+) -> estimate::CarryEstimateInput<T> {
+    let mut input = core::mem::MaybeUninit::uninit();
+    // SAFETY: a NUL-terminated name and a writable struct.
+    let rc = unsafe { default(c"driver".as_ptr(), input.as_mut_ptr()) };
+    assert_eq!(rc, CARRY_OK);
+    // SAFETY: written on CARRY_OK.
+    unsafe { input.assume_init() }
+}
+
+#[test]
+fn estimate_f64_is_the_core_s_and_recovers_a_delivery() {
+    let truth = Unknowns {
+        face_angle_rad: deg(1.5),
+        club_path_rad: deg(-2.0),
+        dynamic_loft_rad: deg(13.0),
+        attack_angle_rad: deg(1.0),
+        impact_toe_m: 0.004,
+        impact_height_m: 0.006,
+        club_speed_mps: 44.0,
+    };
+    let preset = Preset::find("driver").expect("driver");
+    let club = preset.spec::<f64>().validate().expect("club");
+    let y = predict(&club, &Ball::standard(), &truth).expect("launch");
+    let mut input = driver_input::<f64>(carry_estimate_input_default_f64);
+    input.measured_ball.ball_speed_mps = y.ball_speed_mps;
+    input.measured_ball.launch_angle_rad = y.launch_angle_rad;
+    input.measured_ball.launch_direction_rad = y.launch_direction_rad;
+    input.measured_ball.spin_radps = y.spin_radps;
+    input.measured_ball.spin_axis_rad = y.spin_axis_rad;
+    input.measured = CARRY_MEASURED_CLUB_SPEED;
+    input.measured_club.club_speed_mps = 44.0;
+    let mut out = CarryEstimateResult::<f64>::default();
+    // SAFETY: valid pointers.
+    let rc = unsafe { carry_estimate_f64(&input, &mut out) };
+    assert_eq!(rc, CARRY_OK);
+    let core = estimate(
+        &club,
+        &Ball::standard(),
+        &y,
+        &ClubData {
+            club_speed_mps: Some(44.0),
+            ..ClubData::default()
+        },
+        &Settings::typical(&preset.typical),
+    )
+    .expect("estimate");
+    assert_eq!(
+        out.value.face_angle_rad.to_bits(),
+        core.value.face_angle_rad.to_bits()
+    );
+    assert_eq!(
+        out.sd.impact_height_m.to_bits(),
+        core.sd.impact_height_m.to_bits()
+    );
+    assert_eq!(out.iterations, u32::from(core.iterations));
+    assert_eq!(out.club_speed_estimated, 0);
+    assert!((out.value.face_angle_rad - truth.face_angle_rad).abs() < 2.0 * out.sd.face_angle_rad);
+    assert!(
+        (out.value.dynamic_loft_rad - truth.dynamic_loft_rad).abs() < 2.0 * out.sd.dynamic_loft_rad
+    );
+}
+
+#[test]
+fn estimate_f32_runs_and_errors_are_typed() {
+    let mut input = driver_input::<f32>(carry_estimate_input_default_f32);
+    input.measured_ball.ball_speed_mps = 66.0;
+    input.measured_ball.launch_angle_rad = 0.23;
+    input.measured_ball.launch_direction_rad = 0.02;
+    input.measured_ball.spin_radps = 288.0;
+    input.measured_ball.spin_axis_rad = 0.11;
+    let mut out = CarryEstimateResult::<f32>::default();
+    // SAFETY: valid pointers.
+    let rc = unsafe { carry_estimate_f32(&input, &mut out) };
+    assert_eq!(rc, CARRY_OK);
+    assert!(out.value.club_path_rad.is_finite() && out.sd.club_path_rad > 0.0);
+    assert_eq!(out.club_speed_estimated, 1);
+    // SAFETY: NULL pointers are refused.
+    let rc = unsafe { carry_estimate_f32(null(), &mut out) };
+    assert_eq!(rc, CARRY_ERR_NULL_POINTER);
+    // SAFETY: as above.
+    let rc = unsafe { carry_estimate_f32(&input, null_mut()) };
+    assert_eq!(rc, CARRY_ERR_NULL_POINTER);
+    let mut bad = input;
+    bad.max_iterations = 0;
+    // SAFETY: valid pointers.
+    let rc = unsafe { carry_estimate_f32(&bad, &mut out) };
+    assert_eq!(rc, CARRY_ERR_INVALID_INPUT);
+    bad = input;
+    bad.measured_ball.spin_radps = f32::NAN;
+    // SAFETY: valid pointers.
+    let rc = unsafe { carry_estimate_f32(&bad, &mut out) };
+    assert_eq!(rc, CARRY_ERR_INVALID_INPUT);
+    let mut unknown = core::mem::MaybeUninit::<CarryEstimateInputF32>::uninit();
+    // SAFETY: a NUL-terminated name and a writable struct.
+    let rc = unsafe { carry_estimate_input_default_f32(c"putter".as_ptr(), unknown.as_mut_ptr()) };
+    assert_eq!(rc, CARRY_ERR_UNKNOWN_NAME);
+}

@@ -1,0 +1,194 @@
+//! `carry estimate` end to end (issue 23): `carry impact` forward, `carry estimate` back —
+//! the estimate reproduces the launch and names its data; bad input is one line, status 2.
+
+use assert_cmd::Command;
+use serde_json::Value;
+
+fn run(args: &[&str]) -> (i32, String, String) {
+    let out = Command::cargo_bin("carry")
+        .expect("the carry binary is built")
+        .args(args)
+        .output()
+        .expect("carry runs");
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+fn json(args: &[&str]) -> Value {
+    let (code, stdout, stderr) = run(args);
+    assert_eq!(code, 0, "carry {args:?} failed: {stderr}");
+    serde_json::from_str(&stdout).expect("stdout is JSON")
+}
+
+fn num(v: &Value) -> f64 {
+    v.as_f64().unwrap_or_else(|| panic!("not a number: {v}"))
+}
+
+#[test]
+fn estimate_inverts_impact() {
+    let shot = json(&[
+        "impact",
+        "--club",
+        "driver",
+        "--club-speed",
+        "44",
+        "--face-angle",
+        "1.5",
+        "--club-path",
+        "-2",
+        "--dynamic-loft",
+        "13",
+        "--attack-angle",
+        "1",
+        "--json",
+    ]);
+    let l = &shot["launch"];
+    let f = |k: &str| format!("{}", num(&l[k]));
+    let args = [
+        "estimate",
+        "--club",
+        "driver",
+        "--ball-speed",
+        &f("ball_speed_mps"),
+        "--launch-angle",
+        &f("launch_angle_deg"),
+        "--launch-direction",
+        &f("launch_direction_deg"),
+        "--spin",
+        &f("spin_rpm"),
+        "--spin-axis",
+        &f("spin_axis_deg"),
+        "--club-speed",
+        "44",
+        "--json",
+    ];
+    let e = json(&args);
+    for k in [
+        "face_angle_deg",
+        "club_path_deg",
+        "dynamic_loft_deg",
+        "attack_angle_deg",
+        "impact_toe_m",
+        "impact_height_m",
+        "club_speed_mps",
+        "smash_factor",
+    ] {
+        assert!(num(&e[k]).is_finite(), "{k}");
+        assert!(num(&e[&format!("{k}_sd")]) >= 0.0, "{k}_sd");
+    }
+    // the ball data are reproduced within their noise; face and loft within 2σ
+    assert!(num(&e["residual_launch_angle_deg"]).abs() < 0.2, "{e}");
+    assert!(num(&e["residual_spin_axis_deg"]).abs() < 1.5, "{e}");
+    assert!(
+        (num(&e["face_angle_deg"]) - 1.5).abs() < 2.0 * num(&e["face_angle_deg_sd"]),
+        "{e}"
+    );
+    assert!(
+        (num(&e["dynamic_loft_deg"]) - 13.0).abs() < 2.0 * num(&e["dynamic_loft_deg_sd"]) + 0.2,
+        "{e}"
+    );
+    // the table and the CSV run too
+    let (code, table, _) = run(&args[..args.len() - 1]);
+    assert_eq!(code, 0);
+    assert!(table.contains("face angle"), "{table}");
+    let mut csv_args = args.to_vec();
+    csv_args.pop();
+    csv_args.push("--csv");
+    let (code, csv, _) = run(&csv_args);
+    assert_eq!(code, 0);
+    assert!(
+        csv.lines()
+            .next()
+            .is_some_and(|h| h.contains("club_path_deg_sd")),
+        "{csv}"
+    );
+}
+
+#[test]
+fn estimate_rejects_bad_input_with_status_2() {
+    for (args, option) in [
+        (
+            vec!["estimate", "--ball-speed", "-3", "--spin", "2500"],
+            "--ball-speed",
+        ),
+        (
+            vec!["estimate", "--ball-speed", "60", "--club-path", "120"],
+            "club",
+        ),
+    ] {
+        let (code, stdout, stderr) = run(&args);
+        assert_eq!(code, 2, "{args:?}: {stderr}");
+        assert!(stdout.is_empty());
+        assert_eq!(stderr.lines().count(), 1, "{stderr}");
+        assert!(stderr.contains(option), "{stderr}");
+    }
+}
+
+#[test]
+fn batch_estimate_reads_launch_and_club_columns() {
+    let dir = std::env::temp_dir().join(format!("carry-est-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let input = dir.join("in.csv");
+    std::fs::write(
+        &input,
+        "label,ball_speed,launch_angle,launch_direction,spin,spin_axis,club_speed\n\
+         a,66,13.2,1.1,2750,6.5,45.5\n\
+         b,70,11,-2,2300,-8,\n\
+         c,-5,11,-2,2300,-8,45\n",
+    )
+    .expect("write input");
+    let path = input.to_string_lossy().into_owned();
+    let (code, csv, stderr) = run(&["batch", "estimate", "--club", "driver", "-i", &path]);
+    assert_eq!(code, 0, "{stderr}");
+    let mut lines = csv.lines();
+    let header: Vec<&str> = lines.next().expect("header").split(',').collect();
+    for c in [
+        "line",
+        "label",
+        "face_angle_deg",
+        "face_angle_deg_sd",
+        "club_path_deg",
+        "club_path_deg_sd",
+        "dynamic_loft_deg",
+        "attack_angle_deg",
+        "impact_toe_m",
+        "impact_height_m_sd",
+        "error",
+    ] {
+        assert!(header.contains(&c), "{c} in {header:?}");
+    }
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    assert_eq!(rows.len(), 3);
+    let col = |name: &str| header.iter().position(|h| *h == name).expect("column");
+    // the single-shot command gives the same numbers
+    let single = json(&[
+        "estimate",
+        "--club",
+        "driver",
+        "--ball-speed",
+        "66",
+        "--launch-angle",
+        "13.2",
+        "--launch-direction",
+        "1.1",
+        "--spin",
+        "2750",
+        "--spin-axis",
+        "6.5",
+        "--club-speed",
+        "45.5",
+        "--json",
+    ]);
+    let face: f64 = rows[0][col("face_angle_deg")].parse().expect("number");
+    assert_eq!(face, num(&single["face_angle_deg"]));
+    assert_eq!(rows[1][col("club_speed_estimated")], "1");
+    assert!(
+        rows[2][col("error")].contains("ball_speed"),
+        "{:?}",
+        rows[2]
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}

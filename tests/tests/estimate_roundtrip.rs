@@ -1,0 +1,279 @@
+//! The estimator (`carry_core::estimate`) through the public API, f64 and f32: simulate
+//! deliveries with the default model (the driver preset, its calibrated contact, TrackMan's
+//! convention) and estimate them back.
+//!
+//! * Round trip: with priors that do not bind, the delivery comes back exactly where the
+//!   data determine it. Ball data and club speed leave one direction undetermined (club
+//!   path against heel–toe strike: both tilt the spin axis; docs/estimate.md,
+//!   "Identifiability"), so the round trip also gives the club path, as a radar that tracks
+//!   the club does.
+//! * Calibrated uncertainty: deliveries drawn from the default prior, default launch-monitor
+//!   noise on the data; 68 % ± 5 % of the errors fall within the reported 1σ.
+
+use carry_core::estimate::{
+    BallData, ClubData, Estimate, Noise, Settings, Unknowns, estimate, predict,
+};
+use carry_core::presets::{PRESETS, Preset};
+use carry_core::real::{lit, to_f64};
+use carry_core::{Ball, ClubHead, Real};
+
+/// xorshift64* with Box–Muller normals: reproducible, no dependency.
+struct Rng(u64);
+
+impl Rng {
+    fn uniform(&mut self) -> f64 {
+        self.0 ^= self.0 >> 12;
+        self.0 ^= self.0 << 25;
+        self.0 ^= self.0 >> 27;
+        let v = self.0.wrapping_mul(0x2545_F491_4F6C_DD1D);
+        ((v >> 11) as f64 + 0.5) / (1u64 << 53) as f64
+    }
+    fn normal(&mut self) -> f64 {
+        let (u, v) = (self.uniform(), self.uniform());
+        (-2.0 * u.ln()).sqrt() * (2.0 * std::f64::consts::PI * v).cos()
+    }
+}
+
+fn head<T: Real>(p: &Preset) -> ClubHead<T> {
+    let Ok(h) = p.spec::<T>().validate() else {
+        panic!("{}", p.name)
+    };
+    h
+}
+
+/// A delivery drawn from the default prior of `p`, and its ball data (f64 model).
+fn draw(p: &Preset, rng: &mut Rng) -> Option<(Unknowns<f64>, BallData<f64>)> {
+    let prior = Settings::<f64>::typical(&p.typical).prior;
+    let (m, s) = (prior.mean.to_array(), prior.sd.to_array());
+    let x: [f64; 7] = core::array::from_fn(|i| m[i] + s[i] * rng.normal());
+    let truth = Unknowns::from_array(x);
+    let y = predict(&head::<f64>(p), &Ball::standard(), &truth).ok()?;
+    Some((truth, y))
+}
+
+fn cast<T: Real>(a: [f64; 5]) -> BallData<T> {
+    BallData::from_array(a.map(lit))
+}
+
+fn run<T: Real>(
+    p: &Preset,
+    y: &BallData<f64>,
+    club: &ClubData<f64>,
+    settings: &Settings<f64>,
+) -> Result<Estimate<T>, carry_core::Error> {
+    let c = |v: Option<f64>| v.map(lit::<T>);
+    let club = ClubData {
+        club_speed_mps: c(club.club_speed_mps),
+        attack_angle_rad: c(club.attack_angle_rad),
+        club_path_rad: c(club.club_path_rad),
+        face_angle_rad: c(club.face_angle_rad),
+        dynamic_loft_rad: c(club.dynamic_loft_rad),
+    };
+    let u = |a: &Unknowns<f64>| Unknowns::from_array(a.to_array().map(lit::<T>));
+    let s = Settings {
+        noise: Noise {
+            ball: cast(settings.noise.ball.to_array()),
+            club: u(&settings.noise.club),
+        },
+        prior: carry_core::estimate::Prior {
+            mean: u(&settings.prior.mean),
+            sd: u(&settings.prior.sd),
+        },
+        max_iterations: settings.max_iterations,
+        tolerance: lit(settings.tolerance),
+    };
+    estimate(
+        &head::<T>(p),
+        &Ball::standard(),
+        &cast(y.to_array()),
+        &club,
+        &s,
+    )
+}
+
+/// Largest errors (deg: face, path, loft, attack; m: toe, height) over `n` random
+/// deliveries given ball data, club speed and club path, priors widened 100×.
+fn round_trip<T: Real>(n: usize, seed: u64) -> ([f64; 6], u8) {
+    let p = &PRESETS[0];
+    let mut rng = Rng(seed);
+    let mut worst = [0.0_f64; 6];
+    let mut iterations = 0;
+    let mut done = 0;
+    while done < n {
+        let Some((truth, y)) = draw(p, &mut rng) else {
+            continue;
+        };
+        done += 1;
+        let mut settings = Settings::<f64>::typical(&p.typical);
+        settings.prior = settings.prior.widened(100.0);
+        settings.tolerance = 1e-3;
+        let club = ClubData {
+            club_speed_mps: Some(truth.club_speed_mps),
+            club_path_rad: Some(truth.club_path_rad),
+            attack_angle_rad: Some(truth.attack_angle_rad),
+            ..ClubData::default()
+        };
+        let e = match run::<T>(p, &y, &club, &settings) {
+            Ok(e) => e,
+            Err(e) => panic!("{truth:?}: {e:?}"),
+        };
+        let v = e.value;
+        let errs = [
+            (to_f64(v.face_angle_rad) - truth.face_angle_rad).to_degrees(),
+            (to_f64(v.club_path_rad) - truth.club_path_rad).to_degrees(),
+            (to_f64(v.dynamic_loft_rad) - truth.dynamic_loft_rad).to_degrees(),
+            (to_f64(v.attack_angle_rad) - truth.attack_angle_rad).to_degrees(),
+            to_f64(v.impact_toe_m) - truth.impact_toe_m,
+            to_f64(v.impact_height_m) - truth.impact_height_m,
+        ];
+        for (w, e) in worst.iter_mut().zip(errs) {
+            *w = w.max(e.abs());
+        }
+        iterations = iterations.max(e.iterations);
+    }
+    (worst, iterations)
+}
+
+#[test]
+fn round_trip_f64_recovers_the_delivery() {
+    let (worst, iterations) = round_trip::<f64>(300, 23);
+    println!("f64 worst {worst:?}, iterations ≤ {iterations}");
+    for w in &worst[..4] {
+        assert!(*w <= 0.05, "{worst:?}");
+    }
+    for w in &worst[4..] {
+        assert!(*w <= 0.001, "{worst:?}");
+    }
+}
+
+#[test]
+fn round_trip_f32_recovers_the_delivery() {
+    let (worst, iterations) = round_trip::<f32>(300, 24);
+    println!("f32 worst {worst:?}, iterations ≤ {iterations}");
+    for w in &worst[..4] {
+        assert!(*w <= 0.2, "{worst:?}");
+    }
+    for w in &worst[4..] {
+        assert!(*w <= 0.003, "{worst:?}");
+    }
+}
+
+/// Ball data and the club speed only, default settings: the estimate reproduces the ball
+/// data within their noise (the prior takes a little of the fit), within the iteration
+/// budget.
+fn reproduces<T: Real>(n: usize, seed: u64) -> (f64, u8) {
+    let p = &PRESETS[0];
+    let mut rng = Rng(seed);
+    let settings = Settings::<f64>::typical(&p.typical);
+    let sigma = settings.noise.ball.to_array();
+    let mut worst: f64 = 0.0;
+    let mut iterations = 0;
+    let mut done = 0;
+    while done < n {
+        let Some((truth, y)) = draw(p, &mut rng) else {
+            continue;
+        };
+        done += 1;
+        let club = ClubData {
+            club_speed_mps: Some(truth.club_speed_mps),
+            ..ClubData::default()
+        };
+        let e = match run::<T>(p, &y, &club, &settings) {
+            Ok(e) => e,
+            Err(e) => panic!("{truth:?}: {e:?}"),
+        };
+        for (r, s) in e.residual.to_array().iter().zip(sigma) {
+            worst = worst.max((to_f64(*r) / s).abs());
+        }
+        iterations = iterations.max(e.iterations);
+    }
+    (worst, iterations)
+}
+
+#[test]
+fn ball_data_and_club_speed_are_reproduced() {
+    let (w64, i64) = reproduces::<f64>(300, 25);
+    let (w32, i32) = reproduces::<f32>(300, 26);
+    println!("worst |residual|/σ: f64 {w64:.2e} ({i64} it), f32 {w32:.2e} ({i32} it)");
+    assert!(w64 < 1.0 && w32 < 1.0, "{w64} {w32}");
+}
+
+/// The share of `n` estimates (default settings, ball data and club speed with default
+/// noise added, deliveries drawn from the default prior) whose error lies within the
+/// reported 1σ, per datum: face, path, face-to-path, loft, attack, spin loft, toe, height.
+fn coverage<T: Real>(n: usize, seed: u64) -> [f64; 8] {
+    let p = &PRESETS[0];
+    let mut rng = Rng(seed);
+    let settings = Settings::<f64>::typical(&p.typical);
+    let sigma = settings.noise.ball.to_array();
+    let speed_sigma = settings.noise.club.club_speed_mps;
+    let mut inside = [0usize; 8];
+    let mut done = 0;
+    while done < n {
+        let Some((truth, y)) = draw(p, &mut rng) else {
+            continue;
+        };
+        let y = BallData::from_array(core::array::from_fn(|i| {
+            y.to_array()[i] + sigma[i] * rng.normal()
+        }));
+        if y.validated().is_err() {
+            continue; // noise took a number out of its range (a spin below zero)
+        }
+        let club = ClubData {
+            club_speed_mps: Some(truth.club_speed_mps + speed_sigma * rng.normal()),
+            ..ClubData::default()
+        };
+        let e = match run::<T>(p, &y, &club, &settings) {
+            Ok(e) => e,
+            Err(e) => panic!("{truth:?}: {e:?}"),
+        };
+        done += 1;
+        let t = &truth;
+        let truths = [
+            t.face_angle_rad,
+            t.club_path_rad,
+            t.face_angle_rad - t.club_path_rad,
+            t.dynamic_loft_rad,
+            t.attack_angle_rad,
+            t.dynamic_loft_rad - t.attack_angle_rad,
+            t.impact_toe_m,
+            t.impact_height_m,
+        ];
+        let (v, s) = (e.value.to_array(), e.sd.to_array());
+        for (k, t) in truths.iter().enumerate() {
+            if (to_f64(v[k]) - t).abs() <= to_f64(s[k]) {
+                inside[k] += 1;
+            }
+        }
+    }
+    inside.map(|c| c as f64 / n as f64)
+}
+
+/// The Gaussian (Laplace) 1σ is calibrated for the data the ball pins down through
+/// near-linear relations: face, path, face-to-path, dynamic loft, toe. Attack angle, spin
+/// loft and strike height are tied to the ball speed through the smash factor, which folds
+/// about the face's sweet spot: their posterior is not Gaussian and the reported 1σ covers
+/// about 54 % (docs/estimate.md, "Calibration"); asserted as measured, so that a change
+/// shows.
+fn check(share: [f64; 8]) {
+    for s in [share[0], share[1], share[2], share[3], share[6]] {
+        assert!((0.63..=0.73).contains(&s), "{share:?}");
+    }
+    for s in [share[4], share[5], share[7]] {
+        assert!((0.49..=0.73).contains(&s), "{share:?}");
+    }
+}
+
+#[test]
+fn uncertainty_is_calibrated_f64() {
+    let share = coverage::<f64>(10_000, 27);
+    println!("f64 share within 1σ {share:.3?}");
+    check(share);
+}
+
+#[test]
+fn uncertainty_is_calibrated_f32() {
+    let share = coverage::<f32>(10_000, 28);
+    println!("f32 share within 1σ {share:.3?}");
+    check(share);
+}
