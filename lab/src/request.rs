@@ -713,6 +713,74 @@ pub struct EstimateRecord {
     pub iterations: u8,
 }
 
+impl EstimateRecord {
+    /// The names of [`Self::values`], in order: the CSV columns of `carry batch estimate`
+    /// and the keys of Python's `carry.estimate` (a flag and the iterations as numbers).
+    pub const COLUMNS: [&'static str; 27] = [
+        "face_angle_deg",
+        "face_angle_deg_sd",
+        "club_path_deg",
+        "club_path_deg_sd",
+        "face_to_path_deg",
+        "face_to_path_deg_sd",
+        "dynamic_loft_deg",
+        "dynamic_loft_deg_sd",
+        "attack_angle_deg",
+        "attack_angle_deg_sd",
+        "spin_loft_deg",
+        "spin_loft_deg_sd",
+        "impact_toe_m",
+        "impact_toe_m_sd",
+        "impact_height_m",
+        "impact_height_m_sd",
+        "club_speed_mps",
+        "club_speed_mps_sd",
+        "smash_factor",
+        "smash_factor_sd",
+        "club_speed_estimated",
+        "residual_ball_speed_mps",
+        "residual_launch_angle_deg",
+        "residual_launch_direction_deg",
+        "residual_spin_rpm",
+        "residual_spin_axis_deg",
+        "iterations",
+    ];
+
+    /// The record as numbers in the order of [`Self::COLUMNS`].
+    #[must_use]
+    pub fn values(&self) -> [f64; 27] {
+        [
+            self.face_angle_deg,
+            self.face_angle_deg_sd,
+            self.club_path_deg,
+            self.club_path_deg_sd,
+            self.face_to_path_deg,
+            self.face_to_path_deg_sd,
+            self.dynamic_loft_deg,
+            self.dynamic_loft_deg_sd,
+            self.attack_angle_deg,
+            self.attack_angle_deg_sd,
+            self.spin_loft_deg,
+            self.spin_loft_deg_sd,
+            self.impact_toe_m,
+            self.impact_toe_m_sd,
+            self.impact_height_m,
+            self.impact_height_m_sd,
+            self.club_speed_mps,
+            self.club_speed_mps_sd,
+            self.smash_factor,
+            self.smash_factor_sd,
+            f64::from(u8::from(self.club_speed_estimated)),
+            self.residual_ball_speed_mps,
+            self.residual_launch_angle_deg,
+            self.residual_launch_direction_deg,
+            self.residual_spin_rpm,
+            self.residual_spin_axis_deg,
+            f64::from(self.iterations),
+        ]
+    }
+}
+
 /// Estimates the club delivery of `p`'s club (preset and overrides) from `p`'s launch (the
 /// measured ball data) and the `club` data measured, with the preset's default settings
 /// ([`carry_core::estimate::Settings::typical`]), in `n`'s precision.

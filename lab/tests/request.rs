@@ -114,3 +114,31 @@ fn the_fit_request_rejects_options_that_exclude_each_other() {
         assert_eq!(bad.check().map_err(|e| e.key), Err(key));
     }
 }
+
+#[test]
+fn the_estimate_columns_are_the_record_s_fields_in_order() {
+    let mut p = Params::default();
+    for (key, value) in [
+        (Key::BallSpeed, 68.0),
+        (Key::LaunchAngle, 12.5),
+        (Key::Spin, 2700.0),
+        (Key::SpinAxis, -3.0),
+    ] {
+        key.set(&mut p, Units::Si, Value::Number(value));
+    }
+    let club = carry_lab::request::MeasuredClub {
+        club_speed_mps: Some(46.0),
+        ..Default::default()
+    };
+    let r = carry_lab::request::estimate(&p, &numerics(Precision::F64), &club).expect("estimate");
+    let doc = serde_json::to_value(r).expect("serialisable");
+    let fields = doc.as_object().expect("an object");
+    let values = r.values();
+    for (k, name) in carry_lab::request::EstimateRecord::COLUMNS.iter().enumerate() {
+        let v = &fields[*name];
+        let number = v.as_f64().or_else(|| v.as_bool().map(|b| f64::from(u8::from(b))));
+        assert_eq!(number, Some(values[k]), "{name}");
+    }
+    assert_eq!(fields.len(), carry_lab::request::EstimateRecord::COLUMNS.len());
+    assert!(!r.club_speed_estimated);
+}

@@ -154,70 +154,6 @@ const CLUB_COLUMNS: [(&str, bool, usize); 10] = [
     ("dynamic_loft_deg", true, 4),
 ];
 
-/// The output columns of `carry batch estimate` (after `line` and `label`), in order.
-pub const BATCH_COLUMNS: [&str; 28] = [
-    "face_angle_deg",
-    "face_angle_deg_sd",
-    "club_path_deg",
-    "club_path_deg_sd",
-    "face_to_path_deg",
-    "face_to_path_deg_sd",
-    "dynamic_loft_deg",
-    "dynamic_loft_deg_sd",
-    "attack_angle_deg",
-    "attack_angle_deg_sd",
-    "spin_loft_deg",
-    "spin_loft_deg_sd",
-    "impact_toe_m",
-    "impact_toe_m_sd",
-    "impact_height_m",
-    "impact_height_m_sd",
-    "club_speed_mps",
-    "club_speed_mps_sd",
-    "smash_factor",
-    "smash_factor_sd",
-    "club_speed_estimated",
-    "residual_ball_speed_mps",
-    "residual_launch_angle_deg",
-    "residual_launch_direction_deg",
-    "residual_spin_rpm",
-    "residual_spin_axis_deg",
-    "iterations",
-    "error",
-];
-
-fn values(r: &EstimateRecord) -> [f64; 27] {
-    [
-        r.face_angle_deg,
-        r.face_angle_deg_sd,
-        r.club_path_deg,
-        r.club_path_deg_sd,
-        r.face_to_path_deg,
-        r.face_to_path_deg_sd,
-        r.dynamic_loft_deg,
-        r.dynamic_loft_deg_sd,
-        r.attack_angle_deg,
-        r.attack_angle_deg_sd,
-        r.spin_loft_deg,
-        r.spin_loft_deg_sd,
-        r.impact_toe_m,
-        r.impact_toe_m_sd,
-        r.impact_height_m,
-        r.impact_height_m_sd,
-        r.club_speed_mps,
-        r.club_speed_mps_sd,
-        r.smash_factor,
-        r.smash_factor_sd,
-        f64::from(u8::from(r.club_speed_estimated)),
-        r.residual_ball_speed_mps,
-        r.residual_launch_angle_deg,
-        r.residual_launch_direction_deg,
-        r.residual_spin_rpm,
-        r.residual_spin_axis_deg,
-        f64::from(r.iterations),
-    ]
-}
-
 fn csv_text(text: &str) -> String {
     if text.contains([',', '"', '\n', '\r']) {
         format!("\"{}\"", text.replace('"', "\"\""))
@@ -230,7 +166,7 @@ fn csv_text(text: &str) -> String {
 /// launch as in `carry batch flight` (option names in snake_case, or another batch's SI
 /// output columns) plus any of the measured club columns (`club_speed`, `attack_angle`,
 /// `club_path`, `face_angle`, `dynamic_loft`; or `*_mps`/`*_deg` in SI). Output: CSV
-/// (`line`, `label` if given, [`BATCH_COLUMNS`]) or JSON lines.
+/// (`line`, `label` if given, [`EstimateRecord::COLUMNS`], `error`) or JSON lines.
 ///
 /// # Errors
 /// A bad file or header (status 2), failing to write (status 1).
@@ -350,7 +286,7 @@ pub fn batch(args: &crate::cli::BatchArgs, cmd: &EstimateCmd) -> Result<(), Fail
         if label.is_some() {
             out.push_str(",label");
         }
-        for c in BATCH_COLUMNS {
+        for c in EstimateRecord::COLUMNS.iter().chain(&["error"]) {
             out.push(',');
             out.push_str(c);
         }
@@ -390,13 +326,13 @@ pub fn batch(args: &crate::cli::BatchArgs, cmd: &EstimateCmd) -> Result<(), Fail
             }
             match result {
                 Ok(r) => {
-                    for v in values(r) {
+                    for v in r.values() {
                         let _ = write!(out, ",{v}");
                     }
                     out.push_str(",\n");
                 }
                 Err(e) => {
-                    out.push_str(&",".repeat(BATCH_COLUMNS.len() - 1));
+                    out.push_str(&",".repeat(EstimateRecord::COLUMNS.len()));
                     let _ = writeln!(
                         out,
                         ",{}",
