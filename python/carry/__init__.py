@@ -6,6 +6,8 @@ called from Python:
 * :func:`impact` — club delivery → ball launch (``carry impact``),
 * :func:`flight` — launch → flight (``carry flight``),
 * :func:`shot` — delivery → launch → flight (``carry shot``),
+* :func:`estimate` — ball data → club data, the impact model run backwards
+  (``carry estimate``),
 * :func:`fit` — fit an aerodynamic model or contact law to measured shots (``carry fit``),
 * :func:`optimize`, :func:`sweep`, :func:`dispersion`, :func:`normalize` — the analyses
   (``carry optimize``, …): the best delivery, the ball position along a swing, Monte-Carlo
@@ -41,14 +43,14 @@ import numpy as _np
 from . import _carry
 
 __all__ = [
-    "impact", "flight", "shot", "fit", "optimize", "sweep", "dispersion", "normalize",
+    "impact", "flight", "shot", "estimate", "fit", "optimize", "sweep", "dispersion", "normalize",
     "columns", "inputs", "ShotError",
 ]
 __version__ = "0.1.0"
 
 _NUMERIC = ("number", "radius")
 _TEXT = ("preset", "contact", "aero", "ground", "convention")
-_INPUTS = {mode: dict(_carry.inputs(mode)) for mode in ("impact", "flight", "shot")}
+_INPUTS = {mode: dict(_carry.inputs(mode)) for mode in ("impact", "flight", "shot", "estimate")}
 _ALL_NAMES = set().union(*_INPUTS.values())
 
 
@@ -64,11 +66,11 @@ class ShotError(ValueError):
 
 
 def inputs(mode: str) -> _Dict[str, str]:
-    """The keyword arguments of ``impact``, ``flight`` or ``shot`` and their kinds
+    """The keyword arguments of ``impact``, ``flight``, ``shot`` or ``estimate`` and their kinds
     (``number``, ``radius``, ``vector``, ``tensor``, ``preset``, ``contact``, ``aero``,
     ``bool``, ``ground`` or ``setting``)."""
     if mode not in _INPUTS:
-        raise ValueError(f"mode: unknown '{mode}' (one of: impact, flight, shot)")
+        raise ValueError(f"mode: unknown '{mode}' (one of: impact, flight, shot, estimate)")
     return dict(_INPUTS[mode])
 
 
@@ -204,6 +206,26 @@ def shot(*, raise_on_error: bool = False, **kwargs: _Any) -> _Dict[str, _np.ndar
     :func:`impact` and the scene and integrator arguments of :func:`flight`; returns the
     columns of both."""
     return _run("shot", kwargs, raise_on_error)
+
+
+def estimate(*, raise_on_error: bool = False, **kwargs: _Any) -> _Dict[str, _np.ndarray]:
+    """Ball data → club data, as ``carry estimate``: the impact model run backwards
+    (a maximum a posteriori fit; docs/estimate.md).
+
+    Arguments: the measured launch as :func:`flight` takes it (``ball_speed``,
+    ``launch_angle``, ``launch_direction``, and ``spin`` + ``spin_axis`` or ``backspin`` +
+    ``sidespin``), whatever the launch monitor measured of the club (``club_speed``,
+    ``attack_angle``, ``club_path``, ``face_angle``, ``dynamic_loft``; each optional), the
+    club (``club`` preset, ``contact``, ``loft``, ``cor``, …), ball (``ball_mass``,
+    ``ball_radius``), ``precision``, ``units``.
+    Returns the estimated delivery in TrackMan's convention, each datum with its 1σ
+    (``face_angle_deg`` and ``face_angle_deg_sd``, ``club_path_deg``, ``face_to_path_deg``,
+    ``dynamic_loft_deg``, ``attack_angle_deg``, ``spin_loft_deg``, ``impact_toe_m``,
+    ``impact_height_m``, ``club_speed_mps``, ``smash_factor``), ``club_speed_estimated``
+    (1 where the club speed was not measured), the residuals (modelled − measured ball
+    data) and ``iterations``.
+    """
+    return _run("estimate", kwargs, raise_on_error)
 
 
 def _column_text(values: _np.ndarray) -> list:

@@ -28,8 +28,8 @@ class ShotError(ValueError):
     index: tuple
     message: str
 
-def inputs(mode: Literal["impact", "flight", "shot"]) -> Dict[str, str]: ...
-def columns(mode: Literal["impact", "flight", "shot"], ground: bool = False) -> list[str]: ...
+def inputs(mode: Literal["impact", "flight", "shot", "estimate"]) -> Dict[str, str]: ...
+def columns(mode: Literal["impact", "flight", "shot", "estimate"], ground: bool = False) -> list[str]: ...
 def impact(
     *,
     raise_on_error: bool = False,
@@ -65,6 +65,42 @@ def impact(
     solver: Literal["reduced", "full"] | None = ...,
 ) -> Result:
     """Club delivery → ball launch (``carry impact``); see the module docstring."""
+
+def estimate(
+    *,
+    raise_on_error: bool = False,
+    ball_mass: _Num | None = ...,
+    ball_radius: _Num | None = ...,
+    ball_speed: _Num | None = ...,
+    launch_angle: _Num | None = ...,
+    launch_direction: _Num | None = ...,
+    backspin: _Num | None = ...,
+    sidespin: _Num | None = ...,
+    spin: _Num | None = ...,
+    spin_axis: _Num | None = ...,
+    club_speed: _Num | None = ...,
+    attack_angle: _Num | None = ...,
+    club_path: _Num | None = ...,
+    face_angle: _Num | None = ...,
+    dynamic_loft: _Num | None = ...,
+    club: _Path | None = ...,
+    contact: _Path | None = ...,
+    club_mass: _Num | None = ...,
+    club_inertia: _Vec | None = ...,
+    loft: _Num | None = ...,
+    bulge: _Radius | None = ...,
+    roll: _Radius | None = ...,
+    face_depth_radius: _Radius | None = ...,
+    cg_to_face: _Vec | None = ...,
+    cg_to_face_x: _Num | None = ...,
+    cg_to_face_y: _Num | None = ...,
+    cg_to_face_z: _Num | None = ...,
+    cor: _Num | None = ...,
+    units: Literal["si", "imperial"] | None = ...,
+    precision: Literal["f64", "f32"] | None = ...,
+) -> Result:
+    """Ball data (and any measured club data) → the club delivery with 1σ each
+    (``carry estimate``); see ``carry.estimate``'s docstring."""
 
 def flight(
     *,

@@ -153,7 +153,7 @@ pub fn run(
         .filter(|(n, _)| !is_own(n))
         .cloned()
         .collect();
-    let req = args::request(mode, &shot, &[]).map_err(|e: ArgError| {
+    let req = args::request(args::Target::Run(mode), &shot, &[]).map_err(|e: ArgError| {
         let reason = e
             .reason
             .replace("carry.flight", &format!("carry.{command}"))

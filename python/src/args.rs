@@ -63,6 +63,103 @@ fn setting_applies(mode: Mode, name: &str) -> bool {
     }
 }
 
+/// What a call computes: one of carry-io's runs, or the estimator (club data from ball
+/// data: the launch and the club as inputs, the club data a launch monitor measured as
+/// optional measurements).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Target {
+    /// `carry.impact`, `carry.flight` or `carry.shot`.
+    Run(Mode),
+    /// `carry.estimate`.
+    Estimate,
+}
+
+/// The club data a launch monitor may measure, in [`carry_lab::request::MeasuredClub`]'s
+/// order: inputs of `carry.estimate` besides the launch and the club.
+pub const MEASURED: [Key; 5] = [
+    Key::ClubSpeed,
+    Key::AttackAngle,
+    Key::ClubPath,
+    Key::FaceAngle,
+    Key::DynamicLoft,
+];
+
+impl Target {
+    /// The target called `name`.
+    #[must_use]
+    pub fn of(name: &str) -> Option<Self> {
+        match name {
+            "impact" => Some(Self::Run(Mode::Impact)),
+            "flight" => Some(Self::Run(Mode::Flight)),
+            "shot" => Some(Self::Run(Mode::Shot)),
+            "estimate" => Some(Self::Estimate),
+            _ => None,
+        }
+    }
+
+    /// The Python function's name.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Run(mode) => mode_name(mode),
+            Self::Estimate => "estimate",
+        }
+    }
+
+    /// Whether `key` is an input: for the estimator the launch, the club and the ball as
+    /// in `carry estimate`, and the measured club data.
+    #[must_use]
+    pub fn applies(self, key: Key) -> bool {
+        use Key::*;
+        match self {
+            Self::Run(mode) => applies(mode, key),
+            Self::Estimate => {
+                MEASURED.contains(&key)
+                    || matches!(
+                        key,
+                        BallMass
+                            | BallRadius
+                            | BallSpeed
+                            | LaunchAngle
+                            | LaunchDirection
+                            | Backspin
+                            | Sidespin
+                            | Spin
+                            | SpinAxis
+                            | Club
+                            | Contact
+                            | ClubMass
+                            | ClubInertia
+                            | Loft
+                            | Bulge
+                            | Roll
+                            | FaceDepthRadius
+                            | CgToFace
+                            | CgToFaceX
+                            | CgToFaceY
+                            | CgToFaceZ
+                            | Cor
+                    )
+            }
+        }
+    }
+
+    fn setting_applies(self, name: &str) -> bool {
+        match self {
+            Self::Run(mode) => setting_applies(mode, name),
+            Self::Estimate => matches!(name, "units" | "precision"),
+        }
+    }
+
+    /// The run whose options the call resolves (the estimator reads a flight's launch).
+    fn mode(self) -> Mode {
+        match self {
+            Self::Run(mode) => mode,
+            Self::Estimate => Mode::Flight,
+        }
+    }
+}
+
 /// The kind of a key as the Python layer sees it.
 #[must_use]
 pub fn kind_name(kind: Kind) -> &'static str {
@@ -80,17 +177,17 @@ pub fn kind_name(kind: Kind) -> &'static str {
     }
 }
 
-/// The arguments `mode` takes: shot inputs with their kind, then the settings (`setting`).
+/// The arguments `target` takes: shot inputs with their kind, then the settings (`setting`).
 #[must_use]
-pub fn inputs(mode: Mode) -> Vec<(&'static str, &'static str)> {
+pub fn inputs(target: Target) -> Vec<(&'static str, &'static str)> {
     Key::ALL
         .iter()
-        .filter(|k| applies(mode, **k))
+        .filter(|k| target.applies(**k))
         .map(|k| (k.name(), kind_name(k.kind())))
         .chain(
             SETTINGS
                 .iter()
-                .filter(|s| setting_applies(mode, s))
+                .filter(|s| target.setting_applies(s))
                 .map(|s| (*s, "setting")),
         )
         .collect()
@@ -127,16 +224,16 @@ fn value_enum<E: Choice>(arg: &str, text: &str) -> Result<E, ArgError> {
     E::parse(text).map_err(|reason| ArgError::new(arg, reason))
 }
 
-fn key_of(mode: Mode, name: &str) -> Result<Key, ArgError> {
+fn key_of(target: Target, name: &str) -> Result<Key, ArgError> {
     let key = Key::find(name)
         .filter(|k| k.name() == name)
         .ok_or_else(|| ArgError::new(name, "unknown argument"))?;
-    if applies(mode, key) {
+    if target.applies(key) {
         Ok(key)
     } else {
         Err(ArgError::new(
             name,
-            format!("is not an input of carry.{}", mode_name(mode)),
+            format!("is not an input of carry.{}", target.name()),
         ))
     }
 }
@@ -146,10 +243,11 @@ fn key_of(mode: Mode, name: &str) -> Result<Key, ArgError> {
 /// # Errors
 /// An [`ArgError`] naming the first bad argument.
 pub fn request(
-    mode: Mode,
+    target: Target,
     options: &[(String, String)],
     columns: &[String],
 ) -> Result<Request, ArgError> {
+    let mode = target.mode();
     let mut units = Units::Si;
     let mut numerics = Numerics::default();
     let mut base = Params::default();
@@ -163,10 +261,10 @@ pub fn request(
         units = value_enum::<Units>("units", t)?;
     }
     for (name, _) in options {
-        if SETTINGS.contains(&name.as_str()) && !setting_applies(mode, name) {
+        if SETTINGS.contains(&name.as_str()) && !target.setting_applies(name) {
             return Err(ArgError::new(
                 name,
-                format!("is not a setting of carry.{}", mode_name(mode)),
+                format!("is not a setting of carry.{}", target.name()),
             ));
         }
     }
@@ -195,7 +293,7 @@ pub fn request(
         if SETTINGS.contains(&name.as_str()) {
             continue;
         }
-        keyed.push((key_of(mode, name)?, text));
+        keyed.push((key_of(target, name)?, text));
     }
     keyed.sort_by_key(|(k, _)| *k != Key::Club);
     for (key, text) in &keyed {
@@ -204,7 +302,7 @@ pub fn request(
     }
     let mut keys = Vec::with_capacity(columns.len());
     for name in columns {
-        let key = key_of(mode, name)?;
+        let key = key_of(target, name)?;
         if !matches!(key.kind(), Kind::Number | Kind::Radius) {
             return Err(ArgError::new(
                 name,
@@ -213,7 +311,8 @@ pub fn request(
         }
         keys.push(key);
     }
-    let ground = mode != Mode::Impact
+    let ground = target != Target::Estimate
+        && mode != Mode::Impact
         && (!base.scene.ground.is_empty()
             || keyed.iter().any(|(k, _)| k.is_ground())
             || keys.iter().any(|k| k.is_ground()));

@@ -11,32 +11,28 @@
 
 mod analyses;
 mod args;
+mod estimate;
 mod fit;
 mod rows;
 
-use carry_io::compute::Mode;
 use numpy::{PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray1};
 use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use std::path::PathBuf;
 
-fn mode_of(name: &str) -> PyResult<Mode> {
-    match name {
-        "impact" => Ok(Mode::Impact),
-        "flight" => Ok(Mode::Flight),
-        "shot" => Ok(Mode::Shot),
-        _ => Err(PyValueError::new_err(format!("mode: unknown '{name}'"))),
-    }
+fn target_of(name: &str) -> PyResult<args::Target> {
+    args::Target::of(name).ok_or_else(|| PyValueError::new_err(format!("mode: unknown '{name}'")))
 }
 
-/// The arguments of `mode` as (name, kind) pairs: kind is `number`, `radius`, `vector`,
-/// `tensor`, `preset`, `contact`, `aero`, `bool`, `ground` or `setting`.
+/// The arguments of `mode` (`impact`, `flight`, `shot` or `estimate`) as (name, kind)
+/// pairs: kind is `number`, `radius`, `vector`, `tensor`, `preset`, `contact`, `aero`,
+/// `bool`, `ground` or `setting`.
 #[pyfunction]
 fn inputs(mode: &str) -> PyResult<Vec<(&'static str, &'static str)>> {
-    Ok(args::inputs(mode_of(mode)?))
+    Ok(args::inputs(target_of(mode)?))
 }
 
-/// Runs `mode` over the rows of `columns` (flat float64 arrays of one length, named by
+/// Runs `mode` (`impact`, `flight`, `shot` or `estimate`) over the rows of `columns` (flat float64 arrays of one length, named by
 /// `names`) with the shared `options` ((name, text) pairs). Returns (column names, a
 /// float64 array of shape (rows, columns), list of (row index, message) of failed rows).
 #[pyfunction]
@@ -49,9 +45,9 @@ fn run<'py>(
     options: Vec<(String, String)>,
     rows: usize,
 ) -> PyResult<Output<'py>> {
-    let mode = mode_of(mode)?;
-    let req =
-        args::request(mode, &options, &names).map_err(|e| PyValueError::new_err(e.to_string()))?;
+    let target = target_of(mode)?;
+    let req = args::request(target, &options, &names)
+        .map_err(|e| PyValueError::new_err(e.to_string()))?;
     let slices = columns
         .iter()
         .zip(&names)
@@ -69,7 +65,12 @@ fn run<'py>(
             }
         })
         .collect::<PyResult<Vec<&[f64]>>>()?;
-    let out = py.detach(|| rows::run(&req, &slices, rows));
+    let out = match target {
+        args::Target::Run(_) => py.detach(|| rows::run(&req, &slices, rows)),
+        args::Target::Estimate => py
+            .detach(|| estimate::run(&req, &options, &slices, rows))
+            .map_err(|e| PyRuntimeError::new_err(format!("{e:?}")))?,
+    };
     let width = out.names.len();
     let data = PyArray1::from_vec(py, out.data).reshape([rows, width])?;
     Ok((out.names, data, out.failed))
@@ -82,10 +83,14 @@ type Output<'py> = (
     Vec<(usize, String)>,
 );
 
-/// The output column names of `mode` (with the ground's when `ground`).
+/// The output column names of `mode` (with the ground's when `ground`; the estimator's
+/// have none).
 #[pyfunction]
 fn columns(mode: &str, ground: bool) -> PyResult<Vec<&'static str>> {
-    Ok(carry_io::report::csv_columns(mode_of(mode)?, ground))
+    Ok(match target_of(mode)? {
+        args::Target::Run(mode) => carry_io::report::csv_columns(mode, ground),
+        args::Target::Estimate => carry_lab::request::EstimateRecord::COLUMNS.to_vec(),
+    })
 }
 
 /// A JSON value as Python objects: dict, list, float or int, str, bool, None.
