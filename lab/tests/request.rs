@@ -134,11 +134,19 @@ fn the_estimate_columns_are_the_record_s_fields_in_order() {
     let doc = serde_json::to_value(r).expect("serialisable");
     let fields = doc.as_object().expect("an object");
     let values = r.values();
-    for (k, name) in carry_lab::request::EstimateRecord::COLUMNS.iter().enumerate() {
+    for (k, name) in carry_lab::request::EstimateRecord::COLUMNS
+        .iter()
+        .enumerate()
+    {
         let v = &fields[*name];
-        let number = v.as_f64().or_else(|| v.as_bool().map(|b| f64::from(u8::from(b))));
+        let number = v
+            .as_f64()
+            .or_else(|| v.as_bool().map(|b| f64::from(u8::from(b))));
         assert_eq!(number, Some(values[k]), "{name}");
     }
-    assert_eq!(fields.len(), carry_lab::request::EstimateRecord::COLUMNS.len());
+    assert_eq!(
+        fields.len(),
+        carry_lab::request::EstimateRecord::COLUMNS.len()
+    );
     assert!(!r.club_speed_estimated);
 }
