@@ -101,6 +101,24 @@ impl<T> Default for GivenDelivery<T> {
     }
 }
 
+impl<T: Real> GivenDelivery<T> {
+    /// `base` with what was given put over it: club speed, attack angle, dynamic loft and
+    /// impact height where given, the rest of `base` untouched.
+    #[must_use]
+    pub fn over(&self, base: Delivery<T>) -> Delivery<T> {
+        Delivery {
+            club_speed_mps: self.club_speed_mps.unwrap_or(base.club_speed_mps),
+            attack_angle_rad: self.attack_angle_rad.unwrap_or(base.attack_angle_rad),
+            dynamic_loft_rad: self.dynamic_loft_rad.unwrap_or(base.dynamic_loft_rad),
+            location: FaceLocation {
+                height_m: self.impact_height_m.unwrap_or(base.location.height_m),
+                ..base.location
+            },
+            ..base
+        }
+    }
+}
+
 impl TypicalDelivery {
     /// The rule of a named club, defined once for every shell (the CLI's `--club NAME`, the
     /// C API, Python, the lab): club speed, attack angle, dynamic loft and impact height
@@ -109,17 +127,7 @@ impl TypicalDelivery {
     /// else it has. With nothing given it is [`TypicalDelivery::delivery`].
     #[must_use]
     pub fn completed<T: Real>(&self, given: &GivenDelivery<T>) -> Delivery<T> {
-        let typical = self.delivery::<T>();
-        Delivery {
-            club_speed_mps: given.club_speed_mps.unwrap_or(typical.club_speed_mps),
-            attack_angle_rad: given.attack_angle_rad.unwrap_or(typical.attack_angle_rad),
-            dynamic_loft_rad: given.dynamic_loft_rad.unwrap_or(typical.dynamic_loft_rad),
-            location: FaceLocation {
-                height_m: given.impact_height_m.unwrap_or(typical.location.height_m),
-                ..typical.location
-            },
-            ..typical
-        }
+        given.over(self.delivery::<T>())
     }
 }
 

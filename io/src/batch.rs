@@ -348,6 +348,18 @@ pub fn reader(input: &PathBuf, mode: Mode) -> Result<Opened, InputError> {
     Ok((rdr, cols, len))
 }
 
+/// The CSV dialect of every carry input file: a header line, rows of any length,
+/// whitespace trimmed, `#` comment lines.
+#[must_use]
+pub fn dialect() -> csv::ReaderBuilder {
+    let mut b = csv::ReaderBuilder::new();
+    b.has_headers(true)
+        .flexible(true)
+        .trim(csv::Trim::All)
+        .comment(Some(b'#'));
+    b
+}
+
 /// A CSV reader over any byte source named `name` (for messages), and its column map.
 ///
 /// # Errors
@@ -357,13 +369,7 @@ pub fn csv_reader<R: Read>(
     name: &str,
     mode: Mode,
 ) -> Result<(csv::Reader<R>, Columns), InputError> {
-    let mut rdr = csv::ReaderBuilder::new()
-        .has_headers(true)
-        .flexible(true)
-        .trim(csv::Trim::All)
-        .comment(Some(b'#'))
-        .buffer_capacity(1 << 20)
-        .from_reader(source);
+    let mut rdr = dialect().buffer_capacity(1 << 20).from_reader(source);
     let header = rdr
         .byte_headers()
         .map_err(|e| InputError::new("input", format!("{name}: cannot read the header: {e}")))?

@@ -218,24 +218,18 @@ pub fn ball<T: Real>(p: &Params) -> Result<Ball<T>, InputError> {
 pub fn delivery<T: Real>(p: &Params, head: &ClubHead<T>) -> Delivery<T> {
     let d = &p.delivery;
     // What the user did not give: the named club's typical delivery (the core's rule,
-    // `TypicalDelivery::delivery`), else the reference: square and centred at the default
-    // club speed and the static loft.
-    let mut out = typical(p).map_or_else(
+    // `GivenDelivery::over` the `TypicalDelivery`), else the reference: square and centred
+    // at the default club speed and the static loft.
+    let given = carry_core::presets::GivenDelivery {
+        club_speed_mps: d.club_speed_given.then(|| lit(d.club_speed_mps)),
+        attack_angle_rad: d.attack_angle_deg.map(|a| deg(lit(a))),
+        dynamic_loft_rad: d.dynamic_loft_deg.map(|a| deg(lit(a))),
+        impact_height_m: d.impact_height_m.map(lit),
+    };
+    let mut out = given.over(typical(p).map_or_else(
         || Delivery::square(lit(d.club_speed_mps), head),
         carry_core::presets::TypicalDelivery::delivery::<T>,
-    );
-    if d.club_speed_given {
-        out.club_speed_mps = lit(d.club_speed_mps);
-    }
-    if let Some(a) = d.attack_angle_deg {
-        out.attack_angle_rad = deg(lit(a));
-    }
-    if let Some(a) = d.dynamic_loft_deg {
-        out.dynamic_loft_rad = deg(lit(a));
-    }
-    if let Some(h) = d.impact_height_m {
-        out.location.height_m = lit(h);
-    }
+    ));
     out.club_path_rad = deg(lit(d.club_path_deg));
     out.face_angle_rad = deg(lit(d.face_angle_deg));
     out.lie_rad = deg(lit(d.lie_deg));

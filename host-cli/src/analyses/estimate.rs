@@ -192,12 +192,7 @@ pub fn batch(args: &crate::cli::BatchArgs, cmd: &EstimateCmd) -> Result<(), Fail
     ];
     let (source, _) = carry_io::batch::open(&args.input)?;
     let name = args.input.display().to_string();
-    let mut rdr = csv::ReaderBuilder::new()
-        .has_headers(true)
-        .flexible(true)
-        .trim(csv::Trim::All)
-        .comment(Some(b'#'))
-        .from_reader(source);
+    let mut rdr = carry_io::batch::dialect().from_reader(source);
     let header = rdr
         .byte_headers()
         .map_err(|e| InputError::new("input", format!("{name}: cannot read the header: {e}")))?

@@ -187,12 +187,7 @@ pub fn read_rows(
 ) -> Result<(Vec<ShotRow>, Vec<String>), InputError> {
     let (source, _) = carry_io::batch::open(input)?;
     let name = input.display().to_string();
-    let mut rdr = csv::ReaderBuilder::new()
-        .has_headers(true)
-        .flexible(true)
-        .trim(csv::Trim::All)
-        .comment(Some(b'#'))
-        .from_reader(source);
+    let mut rdr = carry_io::batch::dialect().from_reader(source);
     let header = rdr
         .headers()
         .map_err(|e| InputError::new("input", format!("{name}: cannot read the header: {e}")))?
