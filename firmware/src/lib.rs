@@ -10,6 +10,7 @@ use cortex_m_rt::{ExceptionFrame, exception};
 use defmt_semihosting as _; // the global defmt logger: frames go out through SYS_WRITE
 
 pub mod cases;
+pub mod compare;
 pub mod cost;
 pub mod estimate_cases;
 pub mod golden;

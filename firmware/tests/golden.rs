@@ -16,75 +16,10 @@
 
 use carry_firmware as _;
 
-use carry_core::Real;
 use carry_firmware::cases::{self, FLIGHT_NAMES, IMPACT_NAMES, SOLVERS, VARIANTS};
-#[cfg_attr(carry_m0, allow(unused_imports))]
-use carry_firmware::estimate_cases::{ESTIMATE_CASES, ESTIMATE_NAMES};
-use carry_firmware::golden::{ESTIMATE, Expected, FLIGHT, GROUND, Host, IMPACT};
+use carry_firmware::compare::{Precision, identical};
+use carry_firmware::golden::{Expected, FLIGHT, GROUND, Host, IMPACT};
 use carry_firmware::ground_cases::{GROUND_CASES, GROUND_NAMES};
-
-/// A precision the suite runs in.
-trait Precision: Real + defmt::Format {
-    const NAME: &'static str;
-    fn bits(self) -> u64;
-}
-
-impl Precision for f32 {
-    const NAME: &'static str = "f32";
-    fn bits(self) -> u64 {
-        u64::from(self.to_bits())
-    }
-}
-
-impl Precision for f64 {
-    const NAME: &'static str = "f64";
-    fn bits(self) -> u64 {
-        self.to_bits()
-    }
-}
-
-/// Compares one target result with the host's; logs every difference. Returns whether
-/// they are identical.
-fn identical<T: Precision, const N: usize>(
-    case: &str,
-    variant: &str,
-    names: &[&str; N],
-    target: &Result<[T; N], carry_core::Error>,
-    host: &Host<N>,
-) -> bool {
-    match (target, host) {
-        (Ok(t), Host::Ok(h)) => {
-            let mut same = true;
-            for i in 0..N {
-                if t[i].bits() != h[i] {
-                    same = false;
-                    defmt::error!(
-                        "{=str} {=str} {=str}: {=str} target {=u64:#x} ({}) != host {=u64:#x}",
-                        T::NAME,
-                        case,
-                        variant,
-                        names[i],
-                        t[i].bits(),
-                        t[i],
-                        h[i]
-                    );
-                }
-            }
-            same
-        }
-        (Err(e), Host::Err(code)) if cases::error_code(e) == *code => true,
-        (t, _) => {
-            defmt::error!(
-                "{=str} {=str} {=str}: outcome differs: target {}",
-                T::NAME,
-                case,
-                variant,
-                t.is_ok()
-            );
-            false
-        }
-    }
-}
 
 fn impact_bit_identity<T: Precision>(
     host: impl Fn(&carry_firmware::golden::ImpactCase) -> &[Host<23>; 3],
@@ -149,28 +84,6 @@ fn calibrated_bit_identity<T: Precision>(
         "flight {=str} tour2023: {=u32} flights, {=u32} differ from the host",
         T::NAME,
         FLIGHT.len() as u32,
-        differ
-    );
-    defmt::assert_eq!(differ, 0);
-}
-
-/// Estimates of club data from ball data (issue 23), bit for bit against the host.
-#[cfg_attr(carry_m0, allow(dead_code))]
-fn estimate_bit_identity<T: Precision>(
-    host: impl Fn(&carry_firmware::golden::EstimateHost) -> &Host<26>,
-) {
-    let mut differ = 0u32;
-    for (case, h) in ESTIMATE_CASES.iter().zip(ESTIMATE) {
-        defmt::assert_eq!(case.name, h.name);
-        let target = case.outputs::<T>();
-        if !identical(case.name, "default", &ESTIMATE_NAMES, &target, host(h)) {
-            differ += 1;
-        }
-    }
-    defmt::info!(
-        "estimate {=str}: {=usize} cases, {=u32} differ from the host",
-        T::NAME,
-        ESTIMATE_CASES.len(),
         differ
     );
     defmt::assert_eq!(differ, 0);
@@ -336,24 +249,6 @@ mod tests {
     #[test]
     fn ground_f64_bit_identical_to_host() {
         ground_bit_identity::<f64>(|c| &c.host_f64);
-    }
-
-    /// Not on the Cortex-M0: its 256 KiB of flash do not hold the estimator in software
-    /// f32 and f64 beside the rest of the suite (the M4F and the M7 run it).
-    #[test]
-    fn estimate_f32_bit_identical_to_host() {
-        #[cfg(not(carry_m0))]
-        estimate_bit_identity::<f32>(|c| &c.host_f32);
-        #[cfg(carry_m0)]
-        defmt::info!("estimate f32: not on the M0 (flash)");
-    }
-
-    #[test]
-    fn estimate_f64_bit_identical_to_host() {
-        #[cfg(not(carry_m0))]
-        estimate_bit_identity::<f64>(|c| &c.host_f64);
-        #[cfg(carry_m0)]
-        defmt::info!("estimate f64: not on the M0 (flash)");
     }
 
     /// The host suite's tolerances: 1e-9 relative in f64, 4e-6 in f32.
