@@ -306,6 +306,31 @@ impl<'r, 'b, T: Real> Tracker<'r, 'b, T> {
         Ok(landing)
     }
 
+    /// Whether the step ends below the landing height (a hop's: its plane), where the
+    /// landing is in the step or was before it: one comparison.
+    pub(crate) fn ends_below(&self, step: &Step<'_, T>) -> bool {
+        let y1 = step.y1;
+        match self.plane {
+            None => y1[Y] <= self.landing_height,
+            Some(plane) => {
+                plane.normal.dot(&Vector3::new(y1[Y - 1], y1[Y], y1[Y + 1])) <= plane.offset
+            }
+        }
+    }
+
+    /// Whether the ball comes down at `θ` of the step at less than
+    /// [`GRAZING_LANDING_RAD`](super::GRAZING_LANDING_RAD) to the landing height (a hop's:
+    /// its plane), on the step's interpolant.
+    pub(crate) fn grazing_at(&self, step: &Step<'_, T>, th: T) -> bool {
+        let y = step.state_at(th);
+        let v = Vector3::new(y[VY - 1], y[VY], y[VY + 1]);
+        let vn = match self.plane {
+            None => v.y,
+            Some(plane) => plane.normal.dot(&v),
+        };
+        vn * vn < lit::<T>(super::GRAZING_TAN_SQ) * (v.norm_squared() - vn * vn)
+    }
+
     /// Where in the step the landing is (θ), if it is in this step; no side effects.
     pub(crate) fn landing_in(&self, step: &Step<'_, T>) -> Option<T> {
         match self.plane {
