@@ -6,7 +6,7 @@
 use super::aimed;
 use crate::aero::{Dynamics, ForceEvaluation, ForceField, S, State};
 use crate::error::{Error, Result};
-use crate::integrator::{MAX_TOLERANCE, Method, events, integrate_to_event};
+use crate::integrator::{Method, events, integrate_to_event};
 use crate::real::{Real, larger, lit, smaller};
 use crate::trajectory::{Contact, Plane, Recorder, Stats};
 use nalgebra::Vector3;
@@ -19,7 +19,7 @@ pub const HOP_STEP_FACTOR: f64 = 2.1;
 /// fairway lasts about 1 s and takes one step.
 pub const HOP_MAX_FIRST_STEP_S: f64 = 2.0;
 /// A hop between bounces integrates at this multiple of the flight's tolerances (`rtol`,
-/// `atol`; at most [`MAX_TOLERANCE`]): at the default fidelity every hop then takes one
+/// `atol`; at most [`HOP_MAX_TOLERANCE`]): at the default fidelity every hop then takes one
 /// Dormand–Prince step (7 force evaluations) instead of two or three. The total distance
 /// moves by about 1 cm in 225 m (docs/ground.md), far inside what the bounce model itself
 /// knows, and carry is untouched.

@@ -276,6 +276,12 @@ mod tests {
         );
     }
 
+    #[test]
+    fn grazing_constant_is_the_angles_tangent_squared() {
+        let t = GRAZING_LANDING_RAD.tan();
+        assert!((GRAZING_TAN_SQ / (t * t) - 1.0).abs() < 1e-15);
+    }
+
     /// The seed's fidelity differs from the default only in its first step.
     #[test]
     fn seed_is_the_default_with_the_seed_first_step() {
