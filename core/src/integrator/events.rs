@@ -306,29 +306,52 @@ impl<'r, 'b, T: Real> Tracker<'r, 'b, T> {
         Ok(landing)
     }
 
-    /// Whether the step ends below the landing height (a hop's: its plane), where the
-    /// landing is in the step or was before it: one comparison.
-    pub(crate) fn ends_below(&self, step: &Step<'_, T>) -> bool {
-        let y1 = step.y1;
-        match self.plane {
-            None => y1[Y] <= self.landing_height,
-            Some(plane) => {
-                plane.normal.dot(&Vector3::new(y1[Y - 1], y1[Y], y1[Y + 1])) <= plane.offset
-            }
+    /// Whether the step may land at less than
+    /// [`GRAZING_LANDING_RAD`](super::GRAZING_LANDING_RAD) to the landing height (a hop's:
+    /// its plane), without looking inside it: it ends below that height, and the velocity
+    /// interpolated linearly to where the height crosses it linearly comes down at less
+    /// than twice the grazing angle (a generous margin for so rough an estimate).
+    pub(crate) fn may_graze(&self, step: &Step<'_, T>) -> bool {
+        let (y0, y1) = (step.y0, step.y1);
+        let height = |y: &State<T>| match self.plane {
+            None => y[Y] - self.landing_height,
+            Some(plane) => plane.normal.dot(&Vector3::new(y[Y - 1], y[Y], y[Y + 1])) - plane.offset,
+        };
+        let g1 = height(y1);
+        if !(g1 <= T::zero()) {
+            return false;
         }
+        let g0 = height(y0);
+        let th = if g0 > T::zero() {
+            g0 / (g0 - g1)
+        } else {
+            T::zero()
+        };
+        let velocity = |y: &State<T>| Vector3::new(y[VY - 1], y[VY], y[VY + 1]);
+        let (v0, v1) = (velocity(y0), velocity(y1));
+        !self.descends_at(&(v0 + (v1 - v0) * th), lit(super::GRAZING_TAN_SQ_TWICE))
     }
 
     /// Whether the ball comes down at `θ` of the step at less than
     /// [`GRAZING_LANDING_RAD`](super::GRAZING_LANDING_RAD) to the landing height (a hop's:
     /// its plane), on the step's interpolant.
     pub(crate) fn grazing_at(&self, step: &Step<'_, T>, th: T) -> bool {
-        let y = step.state_at(th);
-        let v = Vector3::new(y[VY - 1], y[VY], y[VY + 1]);
+        let v = Vector3::new(
+            step.poly_of(VY - 1).at(th),
+            step.poly_of(VY).at(th),
+            step.poly_of(VY + 1).at(th),
+        );
+        !self.descends_at(&v, lit(super::GRAZING_TAN_SQ))
+    }
+
+    /// Whether velocity `v` comes down to the landing height (a hop's: its plane) at an
+    /// angle whose tangent squared is `tan_sq` or more.
+    fn descends_at(&self, v: &Vector3<T>, tan_sq: T) -> bool {
         let vn = match self.plane {
             None => v.y,
-            Some(plane) => plane.normal.dot(&v),
+            Some(plane) => plane.normal.dot(v),
         };
-        vn * vn < lit::<T>(super::GRAZING_TAN_SQ) * (v.norm_squared() - vn * vn)
+        vn < T::zero() && vn * vn >= tan_sq * (v.norm_squared() - vn * vn)
     }
 
     /// Where in the step the landing is (θ), if it is in this step; no side effects.

@@ -264,10 +264,12 @@ pub(crate) fn dormand_prince<T: Real, R: Rhs<T>>(
             // Runge–Kutta step rather than from the interpolant across a non-smooth point
             // (the wind profile at the ground).
             // And at a grazing landing (see `super::GRAZING_LANDING_RAD`).
-            let refine = if cfg.refine_landing || (!refined && tracker.ends_below(&step)) {
+            let refine = if cfg.refine_landing {
+                tracker.landing_in(&step)
+            } else if !refined && tracker.may_graze(&step) {
                 tracker
                     .landing_in(&step)
-                    .filter(|&th| cfg.refine_landing || tracker.grazing_at(&step, th))
+                    .filter(|&th| tracker.grazing_at(&step, th))
             } else {
                 None
             };

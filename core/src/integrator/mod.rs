@@ -64,6 +64,9 @@ pub const MAX_ADAPTIVE_STEPS: u32 = 100_000;
 pub const GRAZING_LANDING_RAD: f64 = 10.0 * core::f64::consts::PI / 180.0;
 /// `tan²` of [`GRAZING_LANDING_RAD`].
 pub(crate) const GRAZING_TAN_SQ: f64 = 0.031_091_204_125_763_38;
+/// `tan²` of twice [`GRAZING_LANDING_RAD`]: a landing step whose linear estimate of the
+/// landing comes down this steeply is not looked into.
+pub(crate) const GRAZING_TAN_SQ_TWICE: f64 = 0.132_474_331_431_794_2;
 
 /// Largest accepted tolerance (`rtol`, and `atol` in m, m/s, rad/s): looser than 1 the
 /// error test stops controlling anything.
@@ -280,6 +283,8 @@ mod tests {
     fn grazing_constant_is_the_angles_tangent_squared() {
         let t = GRAZING_LANDING_RAD.tan();
         assert!((GRAZING_TAN_SQ / (t * t) - 1.0).abs() < 1e-15);
+        let t = (2.0 * GRAZING_LANDING_RAD).tan();
+        assert!((GRAZING_TAN_SQ_TWICE / (t * t) - 1.0).abs() < 1e-15);
     }
 
     /// The seed's fidelity differs from the default only in its first step.
