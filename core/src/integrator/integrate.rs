@@ -266,10 +266,8 @@ pub(crate) fn dormand_prince<T: Real, R: Rhs<T>>(
             // And at a grazing landing (see `super::GRAZING_LANDING_RAD`).
             let refine = if cfg.refine_landing {
                 tracker.landing_in(&step)
-            } else if !refined && tracker.may_graze(&step) {
-                tracker
-                    .landing_in(&step)
-                    .filter(|&th| tracker.grazing_at(&step, th))
+            } else if !refined && tracker.ends_below(&step) {
+                tracker.grazing_landing(&step)
             } else {
                 None
             };
