@@ -44,7 +44,8 @@ pub struct CarrySettings<T> {
 
 impl<T: Real> Default for CarrySettings<T> {
     /// Reduced solver; Dormand–Prince at the precision's default tolerance (carry within
-    /// 1 mm in f64, 1 cm in f32), 0.1 s first step, no step limit; 1 ms fixed step.
+    /// 1 mm in f64, 1 cm in f32) and its first step (0.46 s in f64, 0.69 s in f32), no
+    /// step limit; 1 ms fixed step.
     fn default() -> Self {
         let (rtol, atol, initial_step_s, max_step_s) = match Integrator::<T>::default() {
             Integrator::DormandPrince {

@@ -6,7 +6,7 @@
 use super::aimed;
 use crate::aero::{Dynamics, ForceEvaluation, ForceField, S, State};
 use crate::error::{Error, Result};
-use crate::integrator::{MAX_TOLERANCE, Method, events, integrate_to_event};
+use crate::integrator::{Method, events, integrate_to_event};
 use crate::real::{Real, larger, lit, smaller};
 use crate::trajectory::{Contact, Plane, Recorder, Stats};
 use nalgebra::Vector3;
@@ -19,11 +19,17 @@ pub const HOP_STEP_FACTOR: f64 = 2.1;
 /// fairway lasts about 1 s and takes one step.
 pub const HOP_MAX_FIRST_STEP_S: f64 = 2.0;
 /// A hop between bounces integrates at this multiple of the flight's tolerances (`rtol`,
-/// `atol`; at most [`MAX_TOLERANCE`]): at the default fidelity every hop then takes one
+/// `atol`; at most [`HOP_MAX_TOLERANCE`]): at the default fidelity every hop then takes one
 /// Dormand–Prince step (7 force evaluations) instead of two or three. The total distance
 /// moves by about 1 cm in 225 m (docs/ground.md), far inside what the bounce model itself
 /// knows, and carry is untouched.
 pub const HOP_TOLERANCE_FACTOR: f64 = 100.0;
+/// The loosest tolerance (`rtol`, `atol`) a hop integrates at: [`HOP_TOLERANCE_FACTOR`]
+/// times the `f64` default tolerance. `f32`'s default tolerance (3e-4) would give its hops
+/// 3e-2, where one aimed step of a topped drive's 1.5 s first hop passes the error test
+/// 0.7 m/s and 10 cm off (and its total 1.5 m off `f64`'s); capped here, both precisions
+/// fly the hops alike and their totals agree within a centimetre (docs/ground.md).
+pub const HOP_MAX_TOLERANCE: f64 = HOP_TOLERANCE_FACTOR * crate::integrator::DEFAULT_TOLERANCE_F64;
 
 /// Flies a hop from a contact: returns the next contact (through the flight's integrator
 /// and force model; see [`Hops`]).
@@ -328,7 +334,7 @@ struct HopStart<'s, T: Real> {
 
 impl<'s, T: Real> Hops<'s, T> {
     /// The hop's start from contact `from`: the integrator at [`HOP_TOLERANCE_FACTOR`] times
-    /// the flight's tolerances, its first trial step a little longer than the vacuum hop.
+    /// the flight's tolerances (at most [`HOP_MAX_TOLERANCE`]), its first trial step a little longer than the vacuum hop.
     fn start(&self, from: &Contact<T>, plane: &Plane<T>) -> Result<HopStart<'s, T>> {
         let field = self.field;
         let limit = self.time_limit - from.time;
@@ -352,8 +358,8 @@ impl<'s, T: Real> Hops<'s, T> {
                 cfg.initial_step = smaller(smaller(guess, lit(HOP_MAX_FIRST_STEP_S)), cfg.max_step);
             }
             let factor = lit::<T>(HOP_TOLERANCE_FACTOR);
-            cfg.rtol = smaller(cfg.rtol * factor, lit(MAX_TOLERANCE));
-            cfg.atol = smaller(cfg.atol * factor, lit(MAX_TOLERANCE));
+            cfg.rtol = smaller(cfg.rtol * factor, lit(HOP_MAX_TOLERANCE));
+            cfg.atol = smaller(cfg.atol * factor, lit(HOP_MAX_TOLERANCE));
         }
         Ok(HopStart {
             y0: [p.x, p.y, p.z, v.x, v.y, v.z, spin],

@@ -27,7 +27,7 @@ use crate::trajectory::{Contact, Plane, Recorder, Stats};
 use crate::validate::finite_vector;
 #[cfg(test)]
 use hop::hop_landing;
-pub use hop::{HOP_MAX_FIRST_STEP_S, HOP_STEP_FACTOR, HOP_TOLERANCE_FACTOR};
+pub use hop::{HOP_MAX_FIRST_STEP_S, HOP_MAX_TOLERANCE, HOP_STEP_FACTOR, HOP_TOLERANCE_FACTOR};
 pub(crate) use hop::{HopForces, Hopper, Hops, low_hop};
 use nalgebra::Vector3;
 pub use surface::{Surface, Turf};

@@ -306,6 +306,68 @@ impl<'r, 'b, T: Real> Tracker<'r, 'b, T> {
         Ok(landing)
     }
 
+    /// Whether the step ends below the landing height (a hop's: its plane), so that the
+    /// landing is in it (or was at its start): one comparison, in every step.
+    #[inline(always)]
+    pub(crate) fn ends_below(&self, step: &Step<'_, T>) -> bool {
+        match self.plane {
+            None => step.y1[Y] <= self.landing_height,
+            Some(_) => self.height(step.y1) <= T::zero(),
+        }
+    }
+
+    /// Height of state `y` above the landing height (a hop's: its plane), m.
+    #[inline(always)]
+    fn height(&self, y: &State<T>) -> T {
+        match self.plane {
+            None => y[Y] - self.landing_height,
+            Some(plane) => plane.normal.dot(&Vector3::new(y[Y - 1], y[Y], y[Y + 1])) - plane.offset,
+        }
+    }
+
+    /// For a step that [`ends_below`](Self::ends_below): the landing's θ in it if the ball
+    /// comes down there at less than [`GRAZING_LANDING_RAD`](super::GRAZING_LANDING_RAD) to
+    /// the landing height (a hop's: its plane). First without looking inside the step: the
+    /// velocity interpolated linearly to where the height crosses linearly. The height is
+    /// concave and the descent steepens, so the chord crosses early and this estimate comes
+    /// down shallower than the landing; only if it is under twice the grazing angle is the
+    /// landing located on the interpolant and its angle tested there. Out of line: the
+    /// flight's step loop keeps its registers (inlined, it cost the flight ~60 instructions
+    /// a step on x86-64).
+    #[inline(never)]
+    #[cold]
+    pub(crate) fn grazing_landing(&self, step: &Step<'_, T>) -> Option<T> {
+        let (y0, y1) = (step.y0, step.y1);
+        let (g0, g1) = (self.height(y0), self.height(y1));
+        let th = if g0 > T::zero() {
+            g0 / (g0 - g1)
+        } else {
+            T::zero()
+        };
+        let velocity = |y: &State<T>| Vector3::new(y[VY - 1], y[VY], y[VY + 1]);
+        let (v0, v1) = (velocity(y0), velocity(y1));
+        if self.descends_at(&(v0 + (v1 - v0) * th), lit(super::GRAZING_TAN_SQ_TWICE)) {
+            return None;
+        }
+        let th = self.landing_in(step)?;
+        let v = Vector3::new(
+            step.poly_of(VY - 1).at(th),
+            step.poly_of(VY).at(th),
+            step.poly_of(VY + 1).at(th),
+        );
+        (!self.descends_at(&v, lit(super::GRAZING_TAN_SQ))).then_some(th)
+    }
+
+    /// Whether velocity `v` comes down to the landing height (a hop's: its plane) at an
+    /// angle whose tangent squared is `tan_sq` or more.
+    fn descends_at(&self, v: &Vector3<T>, tan_sq: T) -> bool {
+        let vn = match self.plane {
+            None => v.y,
+            Some(plane) => plane.normal.dot(v),
+        };
+        vn < T::zero() && vn * vn >= tan_sq * (v.norm_squared() - vn * vn)
+    }
+
     /// Where in the step the landing is (θ), if it is in this step; no side effects.
     pub(crate) fn landing_in(&self, step: &Step<'_, T>) -> Option<T> {
         match self.plane {

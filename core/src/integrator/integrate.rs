@@ -225,6 +225,7 @@ pub(crate) fn dormand_prince<T: Real, R: Rhs<T>>(
     let mut t = T::zero();
     let mut h = smaller(cfg.initial_step, cfg.max_step);
     let mut rejected_last = false;
+    let mut refined = false;
     let (safety, grow, shrink) = (lit::<T>(0.9), lit::<T>(5.0), lit::<T>(0.2));
     let eps16 = T::default_epsilon() * lit(16.0);
     loop {
@@ -262,13 +263,17 @@ pub(crate) fn dormand_prince<T: Real, R: Rhs<T>>(
             // Once: redo the step to end at the landing, so the landing state comes from a
             // Runge–Kutta step rather than from the interpolant across a non-smooth point
             // (the wind profile at the ground).
+            // And at a grazing landing (see `super::GRAZING_LANDING_RAD`).
             let refine = if cfg.refine_landing {
                 tracker.landing_in(&step)
+            } else if !refined && tracker.ends_below(&step) {
+                tracker.grazing_landing(&step)
             } else {
                 None
             };
             if let Some(th) = refine {
                 cfg.refine_landing = false;
+                refined = true;
                 if th < T::one() && th > T::zero() {
                     // The discarded step counts as rejected (its evaluations are spent).
                     stats.rejected_steps = stats.rejected_steps.saturating_add(1);

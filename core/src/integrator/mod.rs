@@ -54,11 +54,42 @@ pub const DEFAULT_TOLERANCE_F32: f64 = 3.0e-4;
 /// the tightest tolerance takes a few hundred; the budget only stops absurd inputs (it
 /// bounds the run time of every flight, so firmware never hangs): [`Error::StepLimit`].
 pub const MAX_ADAPTIVE_STEPS: u32 = 100_000;
+/// A flight coming down at less than this (rad, 10°) below the horizontal ends on a
+/// Runge–Kutta step redone to the landing, not on the step's interpolant. At a grazing
+/// landing the height's error `δy` on the interpolant moves the landing point by
+/// `δy / tan θ` (115× at 0.5°) and its velocity with it: at the default `f32` tolerance
+/// a topped shot's total (which the bounces take from the landing) moved by up to 4.8 cm
+/// against `f64`'s; redone, within 4 mm (docs/ground.md, Cost). One extra step (6 force
+/// evaluations) for such flights only; the others pay one comparison a step.
+pub const GRAZING_LANDING_RAD: f64 = 10.0 * core::f64::consts::PI / 180.0;
+/// `tan²` of [`GRAZING_LANDING_RAD`].
+pub(crate) const GRAZING_TAN_SQ: f64 = 0.031_091_204_125_763_38;
+/// `tan²` of twice [`GRAZING_LANDING_RAD`]: a landing step whose linear estimate of the
+/// landing comes down this steeply is not looked into.
+pub(crate) const GRAZING_TAN_SQ_TWICE: f64 = 0.132_474_331_431_794_2;
+
 /// Largest accepted tolerance (`rtol`, and `atol` in m, m/s, rad/s): looser than 1 the
 /// error test stops controlling anything.
 pub const MAX_TOLERANCE: f64 = 1.0;
-/// Default first trial step of the adaptive integrator (s).
+/// First trial step (s) of [`Integrator::dormand_prince`] at any tolerance, and of the
+/// seed's default fidelity ([`Integrator::seed`]).
 pub const DEFAULT_INITIAL_STEP_S: f64 = 0.1;
+/// First trial step (s) of the default fidelity in `f64`: `C·tol^(1/5)` with
+/// `C = `[`INITIAL_STEP_SCALE_S`] at [`DEFAULT_TOLERANCE_F64`] (0.4621 s), rounded.
+pub const DEFAULT_INITIAL_STEP_F64_S: f64 = 0.46;
+/// First trial step (s) of the default fidelity in `f32`: `C·tol^(1/5)` at
+/// [`DEFAULT_TOLERANCE_F32`] (0.6909 s), rounded.
+pub const DEFAULT_INITIAL_STEP_F32_S: f64 = 0.69;
+/// The scale `C` (s) of the default first trial step `h₀ = C·tol^(1/5)`.
+///
+/// A 5th-order step's local error grows as `h⁵`, so the largest first step that meets a
+/// tolerance scales as `tol^(1/5)` (Hairer, Nørsett & Wanner, *Solving ODEs I*, §II.4,
+/// whose starting-step estimate spends an extra force evaluation to find the constant
+/// per problem). For golf flights the constant was found over a grid of 1,512 launches
+/// (60–180 mph, 1–40°, 1,500–10,000 rpm, still air and three winds): 3.5 s gives the
+/// fewest force evaluations at every tolerance from 3e-4 to 1e-12 within 1 % (docs/flight.md,
+/// `cargo run --release -p carry-core --example initial_step`).
+pub const INITIAL_STEP_SCALE_S: f64 = 3.5;
 /// Cap on the first adaptive step (s) when the ball starts in a wind profile's singular
 /// ground layer (see [`crate::wind::Wind::Profile`]).
 pub const PROFILE_INITIAL_STEP_S: f64 = 1.0e-5;
@@ -74,6 +105,16 @@ impl<T: Real> Integrator<T> {
             initial_step_s: lit(DEFAULT_INITIAL_STEP_S),
             max_step_s: T::max_value().unwrap_or_else(T::one),
         }
+    }
+
+    /// The seed's default fidelity: Dormand–Prince at the precision's default tolerance
+    /// with the first trial step [`DEFAULT_INITIAL_STEP_S`] (0.1 s), the default before
+    /// issue 21. Its flights are bit for bit the ones before then, except those that land
+    /// at under [`GRAZING_LANDING_RAD`] (none of the golden cases), which now end on a
+    /// redone step.
+    #[must_use]
+    pub fn seed() -> Self {
+        Self::dormand_prince(lit(default_tolerance::<T>()))
     }
 
     /// A reference-grade setting: Dormand–Prince at a tolerance of 1e-12 in `f64`
@@ -94,16 +135,32 @@ fn is_single<T: Real>() -> bool {
     T::default_epsilon() > lit(1e-10)
 }
 
+/// The default tolerance of the precision `T`.
+fn default_tolerance<T: Real>() -> f64 {
+    if is_single::<T>() {
+        DEFAULT_TOLERANCE_F32
+    } else {
+        DEFAULT_TOLERANCE_F64
+    }
+}
+
 impl<T: Real> Default for Integrator<T> {
     /// The default fidelity: Dormand–Prince 5(4) at [`DEFAULT_TOLERANCE_F64`] in `f64`
     /// (carry within 1 mm of the reference on the golden set) or
-    /// [`DEFAULT_TOLERANCE_F32`] in `f32` (within 1 cm). See docs/flight.md.
+    /// [`DEFAULT_TOLERANCE_F32`] in `f32` (within 1 cm), first trial step
+    /// [`DEFAULT_INITIAL_STEP_F64_S`] or [`DEFAULT_INITIAL_STEP_F32_S`]. See docs/flight.md.
     fn default() -> Self {
-        Self::dormand_prince(lit(if is_single::<T>() {
-            DEFAULT_TOLERANCE_F32
-        } else {
-            DEFAULT_TOLERANCE_F64
-        }))
+        let tolerance = lit(default_tolerance::<T>());
+        Self::DormandPrince {
+            rtol: tolerance,
+            atol: tolerance,
+            initial_step_s: lit(if is_single::<T>() {
+                DEFAULT_INITIAL_STEP_F32_S
+            } else {
+                DEFAULT_INITIAL_STEP_F64_S
+            }),
+            max_step_s: T::max_value().unwrap_or_else(T::one),
+        }
     }
 }
 
@@ -183,5 +240,79 @@ impl<T: Real> Integrator<T> {
                 Method::Adaptive(cfg)
             }
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn first_step<T: Real>(i: &Integrator<T>) -> f64 {
+        match *i {
+            Integrator::DormandPrince { initial_step_s, .. } => crate::real::to_f64(initial_step_s),
+            _ => f64::NAN,
+        }
+    }
+
+    /// The default first steps are the rule `C·tol^(1/5)` at the default tolerances
+    /// (rounded to 1 %), and the seed's is the 0.1 s of `dormand_prince`.
+    #[test]
+    fn default_first_step_follows_the_tolerance_rule() {
+        for (step, tol) in [
+            (
+                first_step(&Integrator::<f64>::default()),
+                DEFAULT_TOLERANCE_F64,
+            ),
+            (
+                first_step(&Integrator::<f32>::default()),
+                DEFAULT_TOLERANCE_F32,
+            ),
+        ] {
+            let rule = INITIAL_STEP_SCALE_S * tol.powf(0.2);
+            assert!((step / rule - 1.0).abs() < 0.01, "{step} vs {rule}");
+        }
+        assert_eq!(
+            first_step(&Integrator::<f64>::seed()),
+            DEFAULT_INITIAL_STEP_S
+        );
+        assert_eq!(
+            first_step(&Integrator::<f32>::seed()),
+            DEFAULT_INITIAL_STEP_S as f32 as f64
+        );
+    }
+
+    #[test]
+    fn grazing_constant_is_the_angles_tangent_squared() {
+        let t = GRAZING_LANDING_RAD.tan();
+        assert!((GRAZING_TAN_SQ / (t * t) - 1.0).abs() < 1e-15);
+        let t = (2.0 * GRAZING_LANDING_RAD).tan();
+        assert!((GRAZING_TAN_SQ_TWICE / (t * t) - 1.0).abs() < 1e-15);
+    }
+
+    /// The seed's fidelity differs from the default only in its first step.
+    #[test]
+    fn seed_is_the_default_with_the_seed_first_step() {
+        fn check<T: Real>() {
+            let (
+                Integrator::DormandPrince {
+                    rtol,
+                    atol,
+                    max_step_s,
+                    ..
+                },
+                Integrator::DormandPrince {
+                    rtol: r,
+                    atol: a,
+                    max_step_s: m,
+                    ..
+                },
+            ) = (Integrator::<T>::seed(), Integrator::<T>::default())
+            else {
+                panic!("both adaptive")
+            };
+            assert!(rtol == r && atol == a && max_step_s == m);
+        }
+        check::<f32>();
+        check::<f64>();
     }
 }
