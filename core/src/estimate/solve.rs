@@ -401,7 +401,119 @@ fn jacobian<T: Real>(
     Ok(jac)
 }
 
-/// The posterior: value and 1σ of every datum, `√(cᵀ A⁻¹ c)` for its gradient `c`.
+/// The profile posterior along the strike height: the first probe (in Laplace σ of the
+/// height), the farthest probe, and the Gauss–Newton relaxations per probe.
+const PROBE: f64 = 2.0;
+const FAR: f64 = 10.0;
+const RELAX: usize = 2;
+const REFINE: bool = true;
+/// Index of the strike height in the unknowns.
+const HEIGHT: usize = 5;
+
+/// The posterior's covariance `A⁻¹`.
+fn inverse<T: Real>(a: &M7<T>) -> Result<M7<T>> {
+    let mut c = M7::<T>::zeros();
+    for (i, mut col) in c.column_iter_mut().enumerate() {
+        let mut m = *a;
+        let e = V7::<T>::from_fn(|k, _| if k == i { T::one() } else { T::zero() });
+        let z = solve_gauss(&mut m, &e, Pivoting::Equilibrated).map_err(|_| Error::IllPosed)?;
+        col.copy_from(&z);
+    }
+    Ok((c + c.transpose()) * lit::<T>(0.5))
+}
+
+/// The cost minimised over every unknown but the strike height, from `x0` (its height
+/// held): `RELAX` Gauss–Newton steps, each kept only if it lowers the cost. The point and
+/// its cost.
+fn relax<T: Real>(problem: &Problem<'_, T>, x0: V7<T>, unit: &V7<T>) -> Option<(V7<T>, T)> {
+    let mut x = x0;
+    let mut r = problem.residual(&problem.predict(&x).ok()?);
+    let mut cost = problem.cost(&r, &x);
+    let q = M7::from_diagonal(&problem.q);
+    for _ in 0..RELAX {
+        let jac = jacobian(problem, &x, &r, unit).ok()?;
+        let jt = jac.transpose();
+        let mut a = jt * jac + q;
+        let mut g = jt * r + problem.q.component_mul(&(x - problem.m));
+        a.row_mut(HEIGHT).fill(T::zero());
+        a.column_mut(HEIGHT).fill(T::zero());
+        if let Some(v) = a.get_mut((HEIGHT, HEIGHT)) {
+            *v = T::one();
+        }
+        if let Some(v) = g.get_mut(HEIGHT) {
+            *v = T::zero();
+        }
+        let Ok(step) = solve_gauss(&mut a, &(-g), Pivoting::Equilibrated) else {
+            break;
+        };
+        let next = x + step;
+        let Ok(f) = problem.predict(&next) else {
+            break;
+        };
+        let rn = problem.residual(&f);
+        let cn = problem.cost(&rn, &next);
+        if !(cn < cost) {
+            break;
+        }
+        (x, r, cost) = (next, rn, cn);
+    }
+    Some((x, cost))
+}
+
+/// The posterior along the valley of the strike height: mean shift and covariance of the
+/// delivery, from the profile cost (the cost minimised with the height held) probed on
+/// either side of the MAP.
+fn valley<T: Real>(
+    problem: &Problem<'_, T>,
+    x: &V7<T>,
+    r: &SVector<T, 5>,
+    cov: &M7<T>,
+) -> Option<(V7<T>, M7<T>)> {
+    let chh = cov.get((HEIGHT, HEIGHT)).copied()?;
+    if !(chh > T::zero()) {
+        return None;
+    }
+    // the height's conditional direction, one Laplace σ long (sᵀ A s = 1)
+    let s: V7<T> = cov.column(HEIGHT) / chh.sqrt();
+    let unit = units::<T>();
+    let c0 = problem.cost(r, x);
+    let probe = lit::<T>(PROBE);
+    let far = lit::<T>(FAR);
+    // per side: the profile's Gaussian width σ± (in Laplace σ) and the valley's direction
+    // d± (the delivery per unit t)
+    let mut sides = [(T::one(), s), (T::one(), s)];
+    for ((width, dir), sign) in sides.iter_mut().zip([T::one(), -T::one()]) {
+        let mut t = probe;
+        let mut start = s;
+        for round in 0..2 {
+            let Some((xp, cp)) = relax(problem, x + start * (sign * t), &unit) else {
+                break;
+            };
+            let dc = crate::real::larger(cp - c0, t * t / (far * far));
+            *width = t / dc.sqrt();
+            *dir = (xp - x) / (sign * t);
+            if !(REFINE && round == 0 && *width > lit(1.5)) {
+                break;
+            }
+            t = crate::real::smaller(*width + *width, far);
+            start = *dir;
+        }
+    }
+    let [(up, du), (down, dd)] = sides;
+    // split normal: p(t) ∝ exp(−t²/2σ±²) for t ≷ 0, a = √(2/π)/(σ₊ + σ₋);
+    // E[t; t>0] = a σ₊², E[t; t<0] = −a σ₋², E[t²; t≷0] = σ±³/(σ₊ + σ₋)
+    let sum = up + down;
+    let a = lit::<T>(core::f64::consts::FRAC_2_PI).sqrt() / sum;
+    let mean = du * (a * up * up) - dd * (a * down * down);
+    let second = du * du.transpose() * (up * up * up / sum)
+        + dd * dd.transpose() * (down * down * down / sum);
+    let perp = cov - s * s.transpose();
+    Some((mean, perp + second - mean * mean.transpose()))
+}
+
+/// The posterior: value and 1σ of every datum, the mean and `√(cᵀ Σ c)` for its gradient
+/// `c`, with `Σ` the Laplace covariance `A⁻¹` in every direction but the strike height's
+/// valley, where the profile posterior replaces it.
 fn posterior<T: Real>(
     problem: &Problem<'_, T>,
     solution: &Solution<T>,
@@ -414,10 +526,15 @@ fn posterior<T: Real>(
         f,
         iterations,
     } = solution;
+    let mut cov = inverse(a)?;
+    let mut x = *x;
+    if let Some((shift, c)) = valley(problem, &x, &problem.residual(f), &cov) {
+        x += shift;
+        cov = c;
+    }
+    let x = &x;
     let sd = |c: V7<T>| -> Result<T> {
-        let mut m = *a;
-        let z = solve_gauss(&mut m, &c, Pivoting::Equilibrated).map_err(|_| Error::IllPosed)?;
-        let var = c.dot(&z);
+        let var = c.dot(&(cov * c));
         Ok(if var > T::zero() {
             var.sqrt()
         } else {
