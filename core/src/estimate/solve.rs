@@ -403,10 +403,9 @@ fn jacobian<T: Real>(
 
 /// The profile posterior along the strike height: the first probe (in Laplace σ of the
 /// height), the farthest probe, and the Gauss–Newton relaxations per probe.
-const PROBE: f64 = 2.0;
+const PROBE: f64 = 1.5;
 const FAR: f64 = 10.0;
 const RELAX: usize = 2;
-const REFINE: bool = true;
 /// Index of the strike height in the unknowns.
 const HEIGHT: usize = 5;
 
@@ -492,7 +491,7 @@ fn valley<T: Real>(
             let dc = crate::real::larger(cp - c0, t * t / (far * far));
             *width = t / dc.sqrt();
             *dir = (xp - x) / (sign * t);
-            if !(REFINE && round == 0 && *width > lit(1.5)) {
+            if !(round == 0 && *width > lit(1.5)) {
                 break;
             }
             t = crate::real::smaller(*width + *width, far);
@@ -527,12 +526,13 @@ fn posterior<T: Real>(
         iterations,
     } = solution;
     let mut cov = inverse(a)?;
-    let mut x = *x;
-    if let Some((shift, c)) = valley(problem, &x, &problem.residual(f), &cov) {
-        x += shift;
+    // the smash factor and the residuals are those of the most probable delivery
+    let map_speed = x.get(SPEED).copied().unwrap_or_else(T::zero);
+    let mut mean = *x;
+    if let Some((shift, c)) = valley(problem, x, &problem.residual(f), &cov) {
+        mean += shift;
         cov = c;
     }
-    let x = &x;
     let sd = |c: V7<T>| -> Result<T> {
         let var = c.dot(&(cov * c));
         Ok(if var > T::zero() {
@@ -542,8 +542,8 @@ fn posterior<T: Real>(
         })
     };
     let e = |i: usize| V7::<T>::from_fn(|k, _| if k == i { T::one() } else { T::zero() });
-    let u = unknowns(x);
-    let speed = u.club_speed_mps;
+    let u = unknowns(&mean);
+    let speed = map_speed;
     let ball_speed = f.ball_speed_mps;
     let smash = if speed > T::zero() {
         ball_speed / speed
@@ -568,7 +568,7 @@ fn posterior<T: Real>(
         spin_loft_rad: u.dynamic_loft_rad - u.attack_angle_rad,
         impact_toe_m: u.impact_toe_m,
         impact_height_m: u.impact_height_m,
-        club_speed_mps: speed,
+        club_speed_mps: u.club_speed_mps,
         smash_factor: smash,
     };
     let sd = ClubEstimate {
