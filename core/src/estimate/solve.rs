@@ -247,7 +247,7 @@ fn iterate<T: Real>(
                 });
             }
         }
-        let jac = jacobian(problem, &x, &r, &unit)?;
+        let jac = jacobian(problem, &x, &r, &unit, None)?;
         let jt = jac.transpose();
         let a = jt * jac + q;
         let g = jt * r + problem.q.component_mul(&(x - problem.m));
@@ -379,9 +379,13 @@ fn jacobian<T: Real>(
     x: &V7<T>,
     r: &SVector<T, 5>,
     unit: &V7<T>,
+    skip: Option<usize>,
 ) -> Result<Jacobian<T>> {
     let mut jac = Jacobian::<T>::zeros();
     for (i, (mut column, h)) in jac.column_iter_mut().zip(unit.iter()).enumerate() {
+        if skip == Some(i) {
+            continue;
+        }
         let h = *h;
         let mut xp = *x;
         if let Some(v) = xp.get_mut(i) {
@@ -409,31 +413,85 @@ const RELAX: usize = 2;
 /// Index of the strike height in the unknowns.
 const HEIGHT: usize = 5;
 
-/// The posterior's covariance `A⁻¹`.
+/// The posterior's covariance `A⁻¹` of the symmetric positive definite normal matrix, by
+/// one Cholesky factorisation (Golub & Van Loan, Alg. 4.2.1) of `A` scaled to a unit
+/// diagonal, `Ã = D A D` with `D = diag(1/√a_ii)`: `A⁻¹ = D L⁻ᵀ L⁻¹ D` for `Ã = L Lᵀ`.
+///
+/// # Errors
+/// [`Error::IllPosed`] when `A` is not positive definite in the precision.
 fn inverse<T: Real>(a: &M7<T>) -> Result<M7<T>> {
-    let mut c = M7::<T>::zeros();
-    for (i, mut col) in c.column_iter_mut().enumerate() {
-        let mut m = *a;
-        let e = V7::<T>::from_fn(|k, _| if k == i { T::one() } else { T::zero() });
-        let z = solve_gauss(&mut m, &e, Pivoting::Equilibrated).map_err(|_| Error::IllPosed)?;
-        col.copy_from(&z);
+    let at = |m: &M7<T>, i: usize, j: usize| m.get((i, j)).copied().unwrap_or_else(T::zero);
+    let mut d = V7::<T>::zeros();
+    for (i, v) in d.iter_mut().enumerate() {
+        let aii = at(a, i, i);
+        if !(aii > T::zero()) {
+            return Err(Error::IllPosed);
+        }
+        *v = T::one() / aii.sqrt();
     }
-    Ok((c + c.transpose()) * lit::<T>(0.5))
+    let di = |i: usize| d.get(i).copied().unwrap_or_else(T::zero);
+    let tiny = lit::<T>(7.0) * T::default_epsilon();
+    let mut l = M7::<T>::zeros();
+    for j in 0..7 {
+        let mut s = at(a, j, j) * di(j) * di(j);
+        for k in 0..j {
+            s -= at(&l, j, k) * at(&l, j, k);
+        }
+        if !(s > tiny) {
+            return Err(Error::IllPosed);
+        }
+        let ljj = s.sqrt();
+        if let Some(v) = l.get_mut((j, j)) {
+            *v = ljj;
+        }
+        for i in j + 1..7 {
+            let mut s = at(a, i, j) * di(i) * di(j);
+            for k in 0..j {
+                s -= at(&l, i, k) * at(&l, j, k);
+            }
+            if let Some(v) = l.get_mut((i, j)) {
+                *v = s / ljj;
+            }
+        }
+    }
+    // L⁻¹ by forward substitution, column by column
+    let mut li = M7::<T>::zeros();
+    for c in 0..7 {
+        for i in c..7 {
+            let mut s = if i == c { T::one() } else { T::zero() };
+            for k in c..i {
+                s -= at(&l, i, k) * at(&li, k, c);
+            }
+            if let Some(v) = li.get_mut((i, c)) {
+                *v = s / at(&l, i, i);
+            }
+        }
+    }
+    let inv = li.transpose() * li;
+    let c = M7::<T>::from_fn(|i, j| di(i) * at(&inv, i, j) * di(j));
+    if c.iter().all(|v| v.is_finite()) {
+        Ok(c)
+    } else {
+        Err(Error::IllPosed)
+    }
 }
 
-/// The cost minimised over every unknown but the strike height, from `x0` (its height
-/// held): `RELAX` Gauss–Newton steps, each kept only if it lowers the cost. The point and
-/// its cost.
-fn relax<T: Real>(problem: &Problem<'_, T>, x0: V7<T>, unit: &V7<T>) -> Option<(V7<T>, T)> {
+/// The profile cost: the cost minimised over every unknown but the strike height, from
+/// `x0` (its height held), by `RELAX` Gauss–Newton steps on fresh forward-difference
+/// Jacobians (six columns: the height's is not needed), each step kept only if it lowers
+/// the cost. The point and its cost.
+fn relax<T: Real>(problem: &Problem<'_, T>, x0: V7<T>) -> Option<(V7<T>, T)> {
+    let unit = units::<T>();
+    let q = M7::from_diagonal(&problem.q);
     let mut x = x0;
     let mut r = problem.residual(&problem.predict(&x).ok()?);
     let mut cost = problem.cost(&r, &x);
-    let q = M7::from_diagonal(&problem.q);
     for _ in 0..RELAX {
-        let jac = jacobian(problem, &x, &r, unit).ok()?;
+        let jac = jacobian(problem, &x, &r, &unit, Some(HEIGHT)).ok()?;
         let jt = jac.transpose();
         let mut a = jt * jac + q;
         let mut g = jt * r + problem.q.component_mul(&(x - problem.m));
+        // the height held: its row and column of the normal equations replaced by δh = 0
         a.row_mut(HEIGHT).fill(T::zero());
         a.column_mut(HEIGHT).fill(T::zero());
         if let Some(v) = a.get_mut((HEIGHT, HEIGHT)) {
@@ -474,7 +532,6 @@ fn valley<T: Real>(
     }
     // the height's conditional direction, one Laplace σ long (sᵀ A s = 1)
     let s: V7<T> = cov.column(HEIGHT) / chh.sqrt();
-    let unit = units::<T>();
     let c0 = problem.cost(r, x);
     let probe = lit::<T>(PROBE);
     let far = lit::<T>(FAR);
@@ -485,7 +542,7 @@ fn valley<T: Real>(
         let mut t = probe;
         let mut start = s;
         for round in 0..2 {
-            let Some((xp, cp)) = relax(problem, x + start * (sign * t), &unit) else {
+            let Some((xp, cp)) = relax(problem, x + start * (sign * t)) else {
                 break;
             };
             let dc = crate::real::larger(cp - c0, t * t / (far * far));
