@@ -82,6 +82,7 @@ fn run<T: Real>(
         },
         max_iterations: settings.max_iterations,
         tolerance: lit(settings.tolerance),
+        posterior: settings.posterior,
     };
     estimate(
         &head::<T>(p),

@@ -20,7 +20,7 @@
 //! `√(cᵀ A⁻¹ c)` for the datum's gradient `c`, from one Gaussian elimination per datum.
 
 use super::model::{Model, SPEED, Unknowns};
-use super::{BallData, ClubData, ClubEstimate, Estimate, Noise, Prior};
+use super::{BallData, ClubData, ClubEstimate, Estimate, Posterior, Settings};
 use crate::error::{Error, Result};
 use crate::linalg::{Pivoting, solve_gauss};
 use crate::real::{Real, lit};
@@ -112,11 +112,15 @@ pub(super) fn run<T: Real>(
     model: &Model<'_, T>,
     measured: &BallData<T>,
     club_data: &ClubData<T>,
-    noise: &Noise<T>,
-    prior: &Prior<T>,
-    max_iterations: u8,
-    tolerance: T,
+    settings: &Settings<T>,
 ) -> Result<Estimate<T>> {
+    let Settings {
+        noise,
+        prior,
+        max_iterations,
+        tolerance,
+        posterior: summary,
+    } = *settings;
     let measured_club = [
         club_data.face_angle_rad,
         club_data.club_path_rad,
@@ -160,7 +164,7 @@ pub(super) fn run<T: Real>(
     };
     let start = start(&problem, measured, &measured_club)?;
     let solution = iterate(&problem, start, max_iterations, tolerance)?;
-    posterior(&problem, &solution, club_data)
+    posterior(&problem, &solution, club_data, summary)
 }
 
 /// A good start: the centre `m`, moved so that its launch matches the measured one to
@@ -574,6 +578,7 @@ fn posterior<T: Real>(
     problem: &Problem<'_, T>,
     solution: &Solution<T>,
     club_data: &ClubData<T>,
+    summary: Posterior,
 ) -> Result<Estimate<T>> {
     let Solution {
         x,
@@ -586,7 +591,11 @@ fn posterior<T: Real>(
     // the smash factor and the residuals are those of the most probable delivery
     let map_speed = x.get(SPEED).copied().unwrap_or_else(T::zero);
     let mut mean = *x;
-    if let Some((shift, c)) = valley(problem, x, &problem.residual(f), &cov) {
+    let profile = match summary {
+        Posterior::Laplace => None,
+        Posterior::Profile => valley(problem, x, &problem.residual(f), &cov),
+    };
+    if let Some((shift, c)) = profile {
         mean += shift;
         cov = c;
     }
