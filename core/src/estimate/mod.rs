@@ -22,6 +22,7 @@
 
 mod model;
 mod solve;
+mod spd;
 
 pub use model::{Unknowns, predict};
 

@@ -20,9 +20,9 @@
 //! `√(cᵀ A⁻¹ c)` for the datum's gradient `c`, from one Gaussian elimination per datum.
 
 use super::model::{Model, SPEED, Unknowns};
+use super::spd::Cholesky;
 use super::{BallData, ClubData, ClubEstimate, Estimate, Posterior, Settings};
 use crate::error::{Error, Result};
-use crate::linalg::{Pivoting, solve_gauss};
 use crate::real::{Real, lit};
 use core::f64::consts::PI;
 use nalgebra::{SMatrix, SVector};
@@ -272,8 +272,8 @@ fn iterate<T: Real>(
         }
         let mut accepted = None;
         for _ in 0..MAX_REJECTS {
-            let mut damped = model + M7::from_diagonal(&(a.diagonal() * lambda));
-            let Ok(step) = solve_gauss(&mut damped, &(-g), Pivoting::Equilibrated) else {
+            let damped = model + M7::from_diagonal(&(a.diagonal() * lambda));
+            let Ok(step) = solve_spd(&damped, &(-g)) else {
                 lambda *= lit(LAMBDA_GROWTH);
                 continue;
             };
@@ -341,14 +341,11 @@ fn iterate<T: Real>(
 /// that keeps the step a descent direction (else the secant term is dropped).
 fn newton_step<T: Real>(a: &M7<T>, secant: &mut M7<T>, g: &V7<T>) -> Result<(M7<T>, V7<T>)> {
     let model = a + *secant;
-    let mut normal = model;
-    match solve_gauss(&mut normal, &(-g), Pivoting::Equilibrated) {
+    match solve_spd(&model, &(-g)) {
         Ok(d) if g.dot(&d) < T::zero() => Ok((model, d)),
         _ => {
             *secant = M7::zeros();
-            let mut normal = *a;
-            let d = solve_gauss(&mut normal, &(-g), Pivoting::Equilibrated)
-                .map_err(|_| Error::IllPosed)?;
+            let d = solve_spd(a, &(-g)).map_err(|_| Error::IllPosed)?;
             Ok((*a, d))
         }
     }
@@ -417,67 +414,19 @@ const RELAX: usize = 2;
 /// Index of the strike height in the unknowns.
 const HEIGHT: usize = 5;
 
-/// The posterior's covariance `A⁻¹` of the symmetric positive definite normal matrix, by
-/// one Cholesky factorisation (Golub & Van Loan, Alg. 4.2.1) of `A` scaled to a unit
-/// diagonal, `Ã = D A D` with `D = diag(1/√a_ii)`: `A⁻¹ = D L⁻ᵀ L⁻¹ D` for `Ã = L Lᵀ`.
+/// The posterior's covariance `A⁻¹` of the symmetric positive definite normal matrix.
 ///
 /// # Errors
 /// [`Error::IllPosed`] when `A` is not positive definite in the precision.
 fn inverse<T: Real>(a: &M7<T>) -> Result<M7<T>> {
-    let at = |m: &M7<T>, i: usize, j: usize| m.get((i, j)).copied().unwrap_or_else(T::zero);
-    let mut d = V7::<T>::zeros();
-    for (i, v) in d.iter_mut().enumerate() {
-        let aii = at(a, i, i);
-        if !(aii > T::zero()) {
-            return Err(Error::IllPosed);
-        }
-        *v = T::one() / aii.sqrt();
-    }
-    let di = |i: usize| d.get(i).copied().unwrap_or_else(T::zero);
-    let tiny = lit::<T>(7.0) * T::default_epsilon();
-    let mut l = M7::<T>::zeros();
-    for j in 0..7 {
-        let mut s = at(a, j, j) * di(j) * di(j);
-        for k in 0..j {
-            s -= at(&l, j, k) * at(&l, j, k);
-        }
-        if !(s > tiny) {
-            return Err(Error::IllPosed);
-        }
-        let ljj = s.sqrt();
-        if let Some(v) = l.get_mut((j, j)) {
-            *v = ljj;
-        }
-        for i in j + 1..7 {
-            let mut s = at(a, i, j) * di(i) * di(j);
-            for k in 0..j {
-                s -= at(&l, i, k) * at(&l, j, k);
-            }
-            if let Some(v) = l.get_mut((i, j)) {
-                *v = s / ljj;
-            }
-        }
-    }
-    // L⁻¹ by forward substitution, column by column
-    let mut li = M7::<T>::zeros();
-    for c in 0..7 {
-        for i in c..7 {
-            let mut s = if i == c { T::one() } else { T::zero() };
-            for k in c..i {
-                s -= at(&l, i, k) * at(&li, k, c);
-            }
-            if let Some(v) = li.get_mut((i, c)) {
-                *v = s / at(&l, i, i);
-            }
-        }
-    }
-    let inv = li.transpose() * li;
-    let c = M7::<T>::from_fn(|i, j| di(i) * at(&inv, i, j) * di(j));
-    if c.iter().all(|v| v.is_finite()) {
-        Ok(c)
-    } else {
-        Err(Error::IllPosed)
-    }
+    Cholesky::factor(a)
+        .and_then(|c| c.inverse())
+        .map_err(|_| Error::IllPosed)
+}
+
+/// `A⁻¹ b` for a symmetric `A` (an error unless it is positive definite).
+fn solve_spd<T: Real>(a: &M7<T>, b: &V7<T>) -> Result<V7<T>> {
+    Cholesky::factor(a)?.solve(b)
 }
 
 /// The profile cost: the cost minimised over every unknown but the strike height, from
@@ -504,7 +453,7 @@ fn relax<T: Real>(problem: &Problem<'_, T>, x0: V7<T>) -> Option<(V7<T>, T)> {
         if let Some(v) = g.get_mut(HEIGHT) {
             *v = T::zero();
         }
-        let Ok(step) = solve_gauss(&mut a, &(-g), Pivoting::Equilibrated) else {
+        let Ok(step) = solve_spd(&a, &(-g)) else {
             break;
         };
         let next = x + step;
