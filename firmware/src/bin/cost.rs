@@ -367,6 +367,16 @@ fn suite<T: Real>(ticks: &Ticks, k: &mut u32, p: &str) {
                 .map(|e| (u32::from(e.iterations), f64::NAN))
         },
     );
+    op(
+        ticks,
+        k,
+        label!("ESTIMATE: the same, Laplace posterior"),
+        1,
+        &mut || {
+            carry_core::estimate::estimate(&est_club, &ball, &hard_measured, &hard_club, &laplace)
+                .map(|e| (u32::from(e.iterations), f64::NAN))
+        },
+    );
     let ball_only = black_box(carry_core::estimate::ClubData::<T>::default());
     op(
         ticks,
