@@ -238,9 +238,12 @@ fn batch_estimate_reads_a_per_row_club() {
     };
     let loft = |row: &[&str]| -> f64 { row[col("dynamic_loft_deg")].parse().expect("number") };
     let (iron, driver) = (single("7iron"), single("driver"));
-    assert_eq!(loft(&rows[0]), num(&iron["dynamic_loft_deg"]));
-    assert_eq!(loft(&rows[1]), num(&driver["dynamic_loft_deg"]));
-    assert_ne!(loft(&rows[0]), loft(&rows[1]));
+    // the same to rounding (the batch sets the row's preset over `--club driver`'s
+    // options; the single shot takes `--club 7iron`'s: last-bit differences)
+    let close = |a: f64, b: f64| (a - b).abs() <= 1e-9 * b.abs();
+    assert!(close(loft(&rows[0]), num(&iron["dynamic_loft_deg"])));
+    assert!(close(loft(&rows[1]), num(&driver["dynamic_loft_deg"])));
+    assert!(!close(loft(&rows[0]), loft(&rows[1])));
     assert!(rows[2][col("error")].contains("putter9"), "{:?}", rows[2]);
     let _ = std::fs::remove_dir_all(&dir);
 }
