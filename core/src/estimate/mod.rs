@@ -15,10 +15,12 @@
 //! the prior ([`Prior`]: the club's typical delivery and a spread) and `c_j, σ_j` the club
 //! data the device measured ([`ClubData`]). Six or seven unknowns against five ball numbers:
 //! the prior keeps the problem well posed. Levenberg–Marquardt ([`solve`]) with a
-//! forward-difference Jacobian, the core's Gaussian elimination on the 7×7 normal matrix,
-//! and a bounded number of iterations; the 1σ of every datum comes from the posterior
-//! covariance `(Jᵀ W J + P)⁻¹` (Gaussian approximation at x̂). docs/estimate.md has the
-//! sources, identifiability and the accuracy against cost.
+//! forward-difference Jacobian, a Cholesky solve of the 7×7 normal matrix, and a bounded
+//! number of iterations. The value and 1σ of every datum summarise the posterior
+//! ([`Posterior`]): by default its mean and covariance, Gaussian (`(Jᵀ W J + P)⁻¹`) except
+//! along the strike height's valley, where the profile posterior is measured on the cost;
+//! or the MAP and the Laplace covariance. docs/estimate.md has the sources,
+//! identifiability, calibration and the accuracy against cost.
 
 mod model;
 mod solve;

@@ -16,8 +16,13 @@
 //! one-point line search along each accepted step. The iteration stops when the Newton
 //! step is below `tolerance` posterior σ (`√(−gᵀδ)`) or when no damping makes the cost fall
 //! (stationary to the precision); it fails with [`Error::NoConvergence`] after the budget.
-//! The posterior covariance is `A⁻¹` (Gauss–Newton) at the last Jacobian; each 1σ is
-//! `√(cᵀ A⁻¹ c)` for the datum's gradient `c`, from one Gaussian elimination per datum.
+//! The 7×7 systems are solved by a scaled Cholesky factorisation ([`super::spd`]).
+//!
+//! The posterior ([`Posterior`]): the Laplace covariance `C = A⁻¹` (Gauss–Newton, at the
+//! last Jacobian; one inverse), each 1σ `√(cᵀ C c)` for the datum's gradient `c`; by
+//! default, along the strike height's valley the profile posterior replaces it (the
+//! cost minimised with the height held, probed either side of the MAP, summarised as a
+//! split normal: [`valley`]), and the value is the posterior mean (docs/estimate.md §1).
 
 use super::model::{Model, SPEED, Unknowns};
 use super::spd::Cholesky;
@@ -406,8 +411,11 @@ fn jacobian<T: Real>(
     Ok(jac)
 }
 
-/// The profile posterior along the strike height: the first probe (in Laplace σ of the
-/// height), the farthest probe, and the Gauss–Newton relaxations per probe.
+/// The profile posterior along the strike height: the first probe on either side (in
+/// Laplace σ of the height; a side found wider than this is probed again at twice its
+/// width), the farthest probe (also the floor of a width, `t/FAR`), and the Gauss–Newton
+/// relaxations per probe (one relaxation, or Broyden/chord Jacobians instead of fresh
+/// ones, lost the calibration: docs/estimate.md §4).
 const PROBE: f64 = 1.5;
 const FAR: f64 = 10.0;
 const RELAX: usize = 2;
@@ -501,7 +509,7 @@ fn valley<T: Real>(
             let dc = crate::real::larger(cp - c0, t * t / (far * far));
             *width = t / dc.sqrt();
             *dir = (xp - x) / (sign * t);
-            if !(round == 0 && *width > lit(1.5)) {
+            if !(round == 0 && *width > probe) {
                 break;
             }
             t = crate::real::smaller(*width + *width, far);
