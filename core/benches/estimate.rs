@@ -2,7 +2,7 @@
 //! the driver preset's default settings, f64 and f32; an everyday shot, and a cycle over
 //! 64 deliveries spread like the default prior (the typical mix of iteration counts).
 //! `cargo bench -p carry-core --bench estimate`
-use carry_core::estimate::{BallData, ClubData, Settings, Unknowns, estimate, predict};
+use carry_core::estimate::{BallData, ClubData, Posterior, Settings, Unknowns, estimate, predict};
 use carry_core::real::lit;
 use carry_core::units::deg;
 use carry_core::{Ball, PRESETS, Real};
@@ -61,6 +61,23 @@ fn bench_precision<T: Real>(c: &mut Criterion, label: &str) {
             })
         });
     }
+    let laplace = Settings {
+        posterior: Posterior::Laplace,
+        ..settings
+    };
+    if let Some((y, cd)) = case(&everyday) {
+        group.bench_function("everyday_club_speed_laplace", |b| {
+            b.iter(|| {
+                estimate(
+                    black_box(&club),
+                    &ball,
+                    black_box(&y),
+                    black_box(&cd),
+                    &laplace,
+                )
+            })
+        });
+    }
     let cases: Vec<_> = deliveries(&settings, 64).iter().filter_map(case).collect();
     let mut k = 0;
     group.bench_function("prior_spread_club_speed", |b| {
@@ -69,6 +86,14 @@ fn bench_precision<T: Real>(c: &mut Criterion, label: &str) {
             cases
                 .get(k)
                 .map(|(y, cd)| estimate(&club, &ball, black_box(y), black_box(cd), &settings))
+        })
+    });
+    group.bench_function("prior_spread_club_speed_laplace", |b| {
+        b.iter(|| {
+            k = (k + 1) % cases.len().max(1);
+            cases
+                .get(k)
+                .map(|(y, cd)| estimate(&club, &ball, black_box(y), black_box(cd), &laplace))
         })
     });
     group.bench_function("predict", |b| {

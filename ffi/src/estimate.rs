@@ -251,6 +251,8 @@ pub fn run<T: Real>(input: &CarryEstimateInput<T>) -> Result<CarryEstimateResult
         // out of 1..=100 (also past u8): the core's Iterations error
         max_iterations: u8::try_from(input.max_iterations).unwrap_or(0),
         tolerance: input.tolerance,
+        // the default summary (calibrated 1σ); the C input has no field for it
+        posterior: estimate::Posterior::Profile,
     };
     let e = estimate::estimate(
         &club,

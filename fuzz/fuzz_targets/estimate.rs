@@ -4,7 +4,9 @@
 //! anything else a typed error.
 #![no_main]
 
-use carry_core::estimate::{BallData, ClubData, Prior, Settings, Unknowns, estimate};
+use carry_core::estimate::{
+    BallData, ClubData, Posterior, Prior, Settings, Unknowns, estimate,
+};
 use carry_core::real::lit;
 use carry_core::{Ball, ClubSpec, PRESETS, Real, Result};
 use carry_fuzz::Bytes;
@@ -75,6 +77,9 @@ fn run<T: Real>(b: &mut Bytes<'_>) -> Result<()> {
     if b.flag() {
         settings.max_iterations = b.byte();
         settings.tolerance = lit(b.param(0.0, 1.0));
+    }
+    if b.flag() {
+        settings.posterior = Posterior::Laplace;
     }
     let e = estimate(&club, &ball, &measured, &club_data, &settings)?;
     let all = e

@@ -192,3 +192,58 @@ fn batch_estimate_reads_launch_and_club_columns() {
     );
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// A per-row `club` column (a preset name, as `carry batch impact` reads it) picks each
+/// row's club; an empty cell falls back to `--club`; an unknown name is that row's error.
+#[test]
+fn batch_estimate_reads_a_per_row_club() {
+    let dir = std::env::temp_dir().join(format!("carry-est-club-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let input = dir.join("in.csv");
+    std::fs::write(
+        &input,
+        "club,ball_speed,launch_angle,launch_direction,spin,spin_axis,club_speed\n\
+         7iron,53,18,1,6500,3,38\n\
+         ,53,18,1,6500,3,38\n\
+         putter9,53,18,1,6500,3,38\n",
+    )
+    .expect("write input");
+    let path = input.to_string_lossy().into_owned();
+    let (code, csv, stderr) = run(&["batch", "estimate", "--club", "driver", "-i", &path]);
+    assert_eq!(code, 0, "{stderr}");
+    let mut lines = csv.lines();
+    let header: Vec<&str> = lines.next().expect("header").split(',').collect();
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    assert_eq!(rows.len(), 3);
+    let col = |name: &str| header.iter().position(|h| *h == name).expect("column");
+    let single = |club: &str| {
+        json(&[
+            "estimate",
+            "--club",
+            club,
+            "--ball-speed",
+            "53",
+            "--launch-angle",
+            "18",
+            "--launch-direction",
+            "1",
+            "--spin",
+            "6500",
+            "--spin-axis",
+            "3",
+            "--club-speed",
+            "38",
+            "--json",
+        ])
+    };
+    let loft = |row: &[&str]| -> f64 { row[col("dynamic_loft_deg")].parse().expect("number") };
+    let (iron, driver) = (single("7iron"), single("driver"));
+    // the same to rounding (the batch sets the row's preset over `--club driver`'s
+    // options; the single shot takes `--club 7iron`'s: last-bit differences)
+    let close = |a: f64, b: f64| (a - b).abs() <= 1e-9 * b.abs();
+    assert!(close(loft(&rows[0]), num(&iron["dynamic_loft_deg"])));
+    assert!(close(loft(&rows[1]), num(&driver["dynamic_loft_deg"])));
+    assert!(!close(loft(&rows[0]), loft(&rows[1])));
+    assert!(rows[2][col("error")].contains("putter9"), "{:?}", rows[2]);
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -12,7 +12,7 @@
 //! cargo run --release -p carry-lab --example estimate_report
 //! ```
 
-use carry_core::estimate::{BallData, ClubData, Settings, Unknowns, estimate, predict};
+use carry_core::estimate::{BallData, ClubData, Posterior, Settings, Unknowns, estimate, predict};
 use carry_core::real::{lit, to_f64};
 use carry_core::{Ball, PRESETS, Real};
 use rand::SeedableRng;
@@ -78,12 +78,22 @@ struct Score {
 }
 
 fn score<T: Real + Send + Sync>(shots: &[Shot], tolerance: f64, budget: u8) -> Score {
+    score_with::<T>(shots, tolerance, budget, Posterior::Profile)
+}
+
+fn score_with<T: Real + Send + Sync>(
+    shots: &[Shot],
+    tolerance: f64,
+    budget: u8,
+    posterior: Posterior,
+) -> Score {
     let p = &PRESETS[0];
     let club = p.spec::<T>().validate().expect("driver");
     let ball = Ball::<T>::standard();
     let mut settings = Settings::<T>::typical(&p.typical);
     settings.tolerance = lit(tolerance);
     settings.max_iterations = budget;
+    settings.posterior = posterior;
     let results: Vec<_> = shots
         .par_iter()
         .map(|s| {
@@ -221,6 +231,10 @@ fn main() {
         for (label, sc) in [
             ("f64", score::<f64>(&shots, tol, budget)),
             ("f32", score::<f32>(&shots, tol, budget)),
+            (
+                "f64 Laplace (MAP)",
+                score_with::<f64>(&shots, tol, budget, Posterior::Laplace),
+            ),
         ] {
             println!(
                 "| {label} | {tol} | {budget} | {:.3} | {:.3} | {:.3} | {:.3} | {:.2} | {:.2} | {:.2} | {} | {} |",

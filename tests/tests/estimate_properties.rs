@@ -194,9 +194,11 @@ proptest! {
             return Err(TestCaseError::fail("no estimate"));
         };
         // each stops near the optimum (tolerance 0.01 posterior σ); f32's finite-difference
-        // Jacobian resolves the weakest direction (path against toe) to about 0.05 σ
+        // Jacobian resolves the weakest direction (path against toe) to about 0.05 σ, and the
+        // posterior mean along the strike height's valley (profile probes relaxed on f32
+        // finite differences) to about 0.3 σ
         for ((x, y), s) in a.value.to_array().iter().zip(b.value.to_array()).zip(a.sd.to_array()) {
-            prop_assert!((x - to_f64(y)).abs() <= 0.1 * s + 1e-6, "{:?}", a.value.to_array().iter().zip(b.value.to_array()).zip(a.sd.to_array()).map(|((x, y), s)| (x - to_f64(y)) / s).collect::<Vec<_>>());
+            prop_assert!((x - to_f64(y)).abs() <= 0.4 * s + 1e-6, "{:?}", a.value.to_array().iter().zip(b.value.to_array()).zip(a.sd.to_array()).map(|((x, y), s)| (x - to_f64(y)) / s).collect::<Vec<_>>());
         }
     }
 }

@@ -16,13 +16,18 @@
 //! one-point line search along each accepted step. The iteration stops when the Newton
 //! step is below `tolerance` posterior σ (`√(−gᵀδ)`) or when no damping makes the cost fall
 //! (stationary to the precision); it fails with [`Error::NoConvergence`] after the budget.
-//! The posterior covariance is `A⁻¹` (Gauss–Newton) at the last Jacobian; each 1σ is
-//! `√(cᵀ A⁻¹ c)` for the datum's gradient `c`, from one Gaussian elimination per datum.
+//! The 7×7 systems are solved by a scaled Cholesky factorisation ([`super::spd`]).
+//!
+//! The posterior ([`Posterior`]): the Laplace covariance `C = A⁻¹` (Gauss–Newton, at the
+//! last Jacobian; one inverse), each 1σ `√(cᵀ C c)` for the datum's gradient `c`; by
+//! default, along the strike height's valley the profile posterior replaces it (the
+//! cost minimised with the height held, probed either side of the MAP, summarised as a
+//! split normal: [`valley`]), and the value is the posterior mean (docs/estimate.md §1).
 
 use super::model::{Model, SPEED, Unknowns};
-use super::{BallData, ClubData, ClubEstimate, Estimate, Noise, Prior};
+use super::spd::Cholesky;
+use super::{BallData, ClubData, ClubEstimate, Estimate, Posterior, Settings};
 use crate::error::{Error, Result};
-use crate::linalg::{Pivoting, solve_gauss};
 use crate::real::{Real, lit};
 use core::f64::consts::PI;
 use nalgebra::{SMatrix, SVector};
@@ -112,11 +117,15 @@ pub(super) fn run<T: Real>(
     model: &Model<'_, T>,
     measured: &BallData<T>,
     club_data: &ClubData<T>,
-    noise: &Noise<T>,
-    prior: &Prior<T>,
-    max_iterations: u8,
-    tolerance: T,
+    settings: &Settings<T>,
 ) -> Result<Estimate<T>> {
+    let Settings {
+        noise,
+        prior,
+        max_iterations,
+        tolerance,
+        posterior: summary,
+    } = *settings;
     let measured_club = [
         club_data.face_angle_rad,
         club_data.club_path_rad,
@@ -160,7 +169,7 @@ pub(super) fn run<T: Real>(
     };
     let start = start(&problem, measured, &measured_club)?;
     let solution = iterate(&problem, start, max_iterations, tolerance)?;
-    posterior(&problem, &solution, club_data)
+    posterior(&problem, &solution, club_data, summary)
 }
 
 /// A good start: the centre `m`, moved so that its launch matches the measured one to
@@ -247,7 +256,7 @@ fn iterate<T: Real>(
                 });
             }
         }
-        let jac = jacobian(problem, &x, &r, &unit)?;
+        let jac = jacobian(problem, &x, &r, &unit, None)?;
         let jt = jac.transpose();
         let a = jt * jac + q;
         let g = jt * r + problem.q.component_mul(&(x - problem.m));
@@ -268,8 +277,8 @@ fn iterate<T: Real>(
         }
         let mut accepted = None;
         for _ in 0..MAX_REJECTS {
-            let mut damped = model + M7::from_diagonal(&(a.diagonal() * lambda));
-            let Ok(step) = solve_gauss(&mut damped, &(-g), Pivoting::Equilibrated) else {
+            let damped = model + M7::from_diagonal(&(a.diagonal() * lambda));
+            let Ok(step) = solve_spd(&damped, &(-g)) else {
                 lambda *= lit(LAMBDA_GROWTH);
                 continue;
             };
@@ -337,14 +346,11 @@ fn iterate<T: Real>(
 /// that keeps the step a descent direction (else the secant term is dropped).
 fn newton_step<T: Real>(a: &M7<T>, secant: &mut M7<T>, g: &V7<T>) -> Result<(M7<T>, V7<T>)> {
     let model = a + *secant;
-    let mut normal = model;
-    match solve_gauss(&mut normal, &(-g), Pivoting::Equilibrated) {
+    match solve_spd(&model, &(-g)) {
         Ok(d) if g.dot(&d) < T::zero() => Ok((model, d)),
         _ => {
             *secant = M7::zeros();
-            let mut normal = *a;
-            let d = solve_gauss(&mut normal, &(-g), Pivoting::Equilibrated)
-                .map_err(|_| Error::IllPosed)?;
+            let d = solve_spd(a, &(-g)).map_err(|_| Error::IllPosed)?;
             Ok((*a, d))
         }
     }
@@ -379,9 +385,13 @@ fn jacobian<T: Real>(
     x: &V7<T>,
     r: &SVector<T, 5>,
     unit: &V7<T>,
+    skip: Option<usize>,
 ) -> Result<Jacobian<T>> {
     let mut jac = Jacobian::<T>::zeros();
     for (i, (mut column, h)) in jac.column_iter_mut().zip(unit.iter()).enumerate() {
+        if skip == Some(i) {
+            continue;
+        }
         let h = *h;
         let mut xp = *x;
         if let Some(v) = xp.get_mut(i) {
@@ -401,11 +411,131 @@ fn jacobian<T: Real>(
     Ok(jac)
 }
 
-/// The posterior: value and 1σ of every datum, `√(cᵀ A⁻¹ c)` for its gradient `c`.
+/// The profile posterior along the strike height: the first probe on either side (in
+/// Laplace σ of the height; a side found wider than this is probed again at twice its
+/// width), the farthest probe (also the floor of a width, `t/FAR`), and the Gauss–Newton
+/// relaxations per probe (one relaxation, or Broyden/chord Jacobians instead of fresh
+/// ones, lost the calibration: docs/estimate.md §4).
+const PROBE: f64 = 1.5;
+const FAR: f64 = 10.0;
+const RELAX: usize = 2;
+/// Index of the strike height in the unknowns.
+const HEIGHT: usize = 5;
+
+/// The posterior's covariance `A⁻¹` of the symmetric positive definite normal matrix.
+///
+/// # Errors
+/// [`Error::IllPosed`] when `A` is not positive definite in the precision.
+fn inverse<T: Real>(a: &M7<T>) -> Result<M7<T>> {
+    Cholesky::factor(a)
+        .and_then(|c| c.inverse())
+        .map_err(|_| Error::IllPosed)
+}
+
+/// `A⁻¹ b` for a symmetric `A` (an error unless it is positive definite).
+fn solve_spd<T: Real>(a: &M7<T>, b: &V7<T>) -> Result<V7<T>> {
+    Cholesky::factor(a)?.solve(b)
+}
+
+/// The profile cost: the cost minimised over every unknown but the strike height, from
+/// `x0` (its height held), by `RELAX` Gauss–Newton steps on fresh forward-difference
+/// Jacobians (six columns: the height's is not needed), each step kept only if it lowers
+/// the cost. The point and its cost.
+fn relax<T: Real>(problem: &Problem<'_, T>, x0: V7<T>) -> Option<(V7<T>, T)> {
+    let unit = units::<T>();
+    let q = M7::from_diagonal(&problem.q);
+    let mut x = x0;
+    let mut r = problem.residual(&problem.predict(&x).ok()?);
+    let mut cost = problem.cost(&r, &x);
+    for _ in 0..RELAX {
+        let jac = jacobian(problem, &x, &r, &unit, Some(HEIGHT)).ok()?;
+        let jt = jac.transpose();
+        let mut a = jt * jac + q;
+        let mut g = jt * r + problem.q.component_mul(&(x - problem.m));
+        // the height held: its row and column of the normal equations replaced by δh = 0
+        a.row_mut(HEIGHT).fill(T::zero());
+        a.column_mut(HEIGHT).fill(T::zero());
+        if let Some(v) = a.get_mut((HEIGHT, HEIGHT)) {
+            *v = T::one();
+        }
+        if let Some(v) = g.get_mut(HEIGHT) {
+            *v = T::zero();
+        }
+        let Ok(step) = solve_spd(&a, &(-g)) else {
+            break;
+        };
+        let next = x + step;
+        let Ok(f) = problem.predict(&next) else {
+            break;
+        };
+        let rn = problem.residual(&f);
+        let cn = problem.cost(&rn, &next);
+        if !(cn < cost) {
+            break;
+        }
+        (x, r, cost) = (next, rn, cn);
+    }
+    Some((x, cost))
+}
+
+/// The posterior along the valley of the strike height: mean shift and covariance of the
+/// delivery, from the profile cost (the cost minimised with the height held) probed on
+/// either side of the MAP.
+fn valley<T: Real>(
+    problem: &Problem<'_, T>,
+    x: &V7<T>,
+    r: &SVector<T, 5>,
+    cov: &M7<T>,
+) -> Option<(V7<T>, M7<T>)> {
+    let chh = cov.get((HEIGHT, HEIGHT)).copied()?;
+    if !(chh > T::zero()) {
+        return None;
+    }
+    // the height's conditional direction, one Laplace σ long (sᵀ A s = 1)
+    let s: V7<T> = cov.column(HEIGHT) / chh.sqrt();
+    let c0 = problem.cost(r, x);
+    let probe = lit::<T>(PROBE);
+    let far = lit::<T>(FAR);
+    // per side: the profile's Gaussian width σ± (in Laplace σ) and the valley's direction
+    // d± (the delivery per unit t)
+    let mut sides = [(T::one(), s), (T::one(), s)];
+    for ((width, dir), sign) in sides.iter_mut().zip([T::one(), -T::one()]) {
+        let mut t = probe;
+        let mut start = s;
+        for round in 0..2 {
+            let Some((xp, cp)) = relax(problem, x + start * (sign * t)) else {
+                break;
+            };
+            let dc = crate::real::larger(cp - c0, t * t / (far * far));
+            *width = t / dc.sqrt();
+            *dir = (xp - x) / (sign * t);
+            if !(round == 0 && *width > probe) {
+                break;
+            }
+            t = crate::real::smaller(*width + *width, far);
+            start = *dir;
+        }
+    }
+    let [(up, du), (down, dd)] = sides;
+    // split normal: p(t) ∝ exp(−t²/2σ±²) for t ≷ 0, a = √(2/π)/(σ₊ + σ₋);
+    // E[t; t>0] = a σ₊², E[t; t<0] = −a σ₋², E[t²; t≷0] = σ±³/(σ₊ + σ₋)
+    let sum = up + down;
+    let a = lit::<T>(core::f64::consts::FRAC_2_PI).sqrt() / sum;
+    let mean = du * (a * up * up) - dd * (a * down * down);
+    let second = du * du.transpose() * (up * up * up / sum)
+        + dd * dd.transpose() * (down * down * down / sum);
+    let perp = cov - s * s.transpose();
+    Some((mean, perp + second - mean * mean.transpose()))
+}
+
+/// The posterior: value and 1σ of every datum, the mean and `√(cᵀ Σ c)` for its gradient
+/// `c`, with `Σ` the Laplace covariance `A⁻¹` in every direction but the strike height's
+/// valley, where the profile posterior replaces it.
 fn posterior<T: Real>(
     problem: &Problem<'_, T>,
     solution: &Solution<T>,
     club_data: &ClubData<T>,
+    summary: Posterior,
 ) -> Result<Estimate<T>> {
     let Solution {
         x,
@@ -414,10 +544,20 @@ fn posterior<T: Real>(
         f,
         iterations,
     } = solution;
+    let mut cov = inverse(a)?;
+    // the smash factor and the residuals are those of the most probable delivery
+    let map_speed = x.get(SPEED).copied().unwrap_or_else(T::zero);
+    let mut mean = *x;
+    let profile = match summary {
+        Posterior::Laplace => None,
+        Posterior::Profile => valley(problem, x, &problem.residual(f), &cov),
+    };
+    if let Some((shift, c)) = profile {
+        mean += shift;
+        cov = c;
+    }
     let sd = |c: V7<T>| -> Result<T> {
-        let mut m = *a;
-        let z = solve_gauss(&mut m, &c, Pivoting::Equilibrated).map_err(|_| Error::IllPosed)?;
-        let var = c.dot(&z);
+        let var = c.dot(&(cov * c));
         Ok(if var > T::zero() {
             var.sqrt()
         } else {
@@ -425,8 +565,8 @@ fn posterior<T: Real>(
         })
     };
     let e = |i: usize| V7::<T>::from_fn(|k, _| if k == i { T::one() } else { T::zero() });
-    let u = unknowns(x);
-    let speed = u.club_speed_mps;
+    let u = unknowns(&mean);
+    let speed = map_speed;
     let ball_speed = f.ball_speed_mps;
     let smash = if speed > T::zero() {
         ball_speed / speed
@@ -451,7 +591,7 @@ fn posterior<T: Real>(
         spin_loft_rad: u.dynamic_loft_rad - u.attack_angle_rad,
         impact_toe_m: u.impact_toe_m,
         impact_height_m: u.impact_height_m,
-        club_speed_mps: speed,
+        club_speed_mps: u.club_speed_mps,
         smash_factor: smash,
     };
     let sd = ClubEstimate {

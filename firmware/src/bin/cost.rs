@@ -325,6 +325,20 @@ fn suite<T: Real>(ticks: &Ticks, k: &mut u32, p: &str) {
                 .map(|e| (u32::from(e.iterations), f64::NAN))
         },
     );
+    let laplace = black_box(carry_core::estimate::Settings {
+        posterior: carry_core::estimate::Posterior::Laplace,
+        ..settings
+    });
+    op(
+        ticks,
+        k,
+        label!("ESTIMATE: the same, Laplace posterior (MAP, Gauss-Newton 1 sigma)"),
+        1,
+        &mut || {
+            carry_core::estimate::estimate(&est_club, &ball, &measured, &club_data, &laplace)
+                .map(|e| (u32::from(e.iterations), f64::NAN))
+        },
+    );
     // a harder shot, 1.5–2σ of the prior in every datum (more iterations)
     let hard = black_box(carry_core::estimate::Unknowns {
         face_angle_rad: carry_core::units::deg(lit(-4.5)),
@@ -350,6 +364,16 @@ fn suite<T: Real>(ticks: &Ticks, k: &mut u32, p: &str) {
         1,
         &mut || {
             carry_core::estimate::estimate(&est_club, &ball, &hard_measured, &hard_club, &settings)
+                .map(|e| (u32::from(e.iterations), f64::NAN))
+        },
+    );
+    op(
+        ticks,
+        k,
+        label!("ESTIMATE: the same, Laplace posterior"),
+        1,
+        &mut || {
+            carry_core::estimate::estimate(&est_club, &ball, &hard_measured, &hard_club, &laplace)
                 .map(|e| (u32::from(e.iterations), f64::NAN))
         },
     );

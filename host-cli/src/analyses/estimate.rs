@@ -5,7 +5,7 @@ use super::output;
 use crate::cli::{ClubArgs, LaunchArgs, OutputArgs, PrecisionArgs};
 use carry_io::compute::Numerics;
 use carry_io::error::Failure;
-use carry_io::params::Params;
+use carry_io::params::{Key, Params};
 use carry_io::units::{Quantity, Units};
 use carry_lab::request::{EstimateRecord, MeasuredClub};
 use clap::Args;
@@ -199,6 +199,8 @@ pub fn batch(args: &crate::cli::BatchArgs, cmd: &EstimateCmd) -> Result<(), Fail
         .clone();
     // split the header: club columns here, the rest (launch, ball, label) through io
     let mut club_cols: Vec<(usize, bool, usize)> = Vec::new();
+    // a per-row club preset (`club`, as `carry batch impact` reads it), else `--club`
+    let mut preset_col: Option<usize> = None;
     let mut launch_idx: Vec<usize> = Vec::new();
     let mut launch_header = csv::ByteRecord::new();
     for (i, raw) in header.iter().enumerate() {
@@ -206,6 +208,14 @@ pub fn batch(args: &crate::cli::BatchArgs, cmd: &EstimateCmd) -> Result<(), Fail
         let n = n.trim().trim_start_matches('\u{feff}');
         if let Some((_, si, field)) = CLUB_COLUMNS.iter().find(|(c, _, _)| *c == n) {
             club_cols.push((i, *si, *field));
+        } else if n == Key::Club.name() {
+            if preset_col.replace(i).is_some() {
+                return Err(InputError::new(
+                    "input",
+                    format!("{name}: line 1: column '{n}' appears twice"),
+                )
+                .into());
+            }
         } else if carry_io::batch::is_output_column(n)
             && carry_io::params::Key::find(n).is_none()
             && !matches!(
@@ -235,7 +245,14 @@ pub fn batch(args: &crate::cli::BatchArgs, cmd: &EstimateCmd) -> Result<(), Fail
         for &i in &launch_idx {
             sub.push_field(rec.get(i).unwrap_or_default());
         }
-        let p = cols.apply(&sub, &base, u)?;
+        let mut p = cols.apply(&sub, &base, u)?;
+        if let Some(i) = preset_col {
+            let text = String::from_utf8_lossy(rec.get(i).unwrap_or_default());
+            let text = text.trim();
+            if !text.is_empty() {
+                Key::Club.set(&mut p, u, Key::Club.parse(text)?);
+            }
+        }
         let mut club = given;
         for &(i, si, field) in &club_cols {
             let text = String::from_utf8_lossy(rec.get(i).unwrap_or_default());
