@@ -11,7 +11,7 @@
 //! `cargo test -p carry-tests --test estimate_tables -- --nocapture`.
 
 use carry_core::Preset;
-use carry_core::estimate::{BallData, ClubData, Settings, estimate};
+use carry_core::estimate::{BallData, ClubData, Posterior, Settings, estimate};
 use carry_core::units::{deg, mph, rpm, to_deg};
 use carry_core::{Ball, ClubHead};
 use carry_tests::club_delivery;
@@ -78,8 +78,9 @@ fn published() -> Vec<Row> {
         .collect()
 }
 
-/// Estimated (dynamic loft, attack) in degrees from the row's ball data and club speed.
-fn estimated(row: &Row) -> (f64, f64) {
+/// Estimated (dynamic loft, attack) in degrees from the row's ball data and club speed,
+/// with the given posterior summary.
+fn estimated(row: &Row, posterior: Posterior) -> (f64, f64) {
     let preset = Preset::find(&row.club).expect("preset");
     let club: ClubHead<f64> = preset.spec::<f64>().validate().expect("club");
     let ball = Ball::standard();
@@ -94,7 +95,11 @@ fn estimated(row: &Row) -> (f64, f64) {
         club_speed_mps: Some(mph(row.club_speed_mph)),
         ..ClubData::default()
     };
-    let e = estimate(&club, &ball, &y, &c, &Settings::typical(&preset.typical))
+    let settings = Settings {
+        posterior,
+        ..Settings::typical(&preset.typical)
+    };
+    let e = estimate(&club, &ball, &y, &c, &settings)
         .unwrap_or_else(|err| panic!("{}: {err}", row.label));
     (
         to_deg(e.value.dynamic_loft_rad),
@@ -102,9 +107,10 @@ fn estimated(row: &Row) -> (f64, f64) {
     )
 }
 
-/// Mean |error| of (loft, attack): the estimate's and the trivial rules' (the attack's
-/// mean taken per club, over the rows of that club). Prints the rows in one piece.
-fn score(rows: &[Row], title: &str) -> ([f64; 2], [f64; 2]) {
+/// Mean |error| of (loft, attack): the estimate's (with `posterior`) and the trivial
+/// rules' (the attack's mean taken per club, over the rows of that club). Prints the rows
+/// in one piece.
+fn score(rows: &[Row], title: &str, posterior: Posterior) -> ([f64; 2], [f64; 2]) {
     use core::fmt::Write as _;
     let n = rows.len() as f64;
     let mean_attack = |club: &str| {
@@ -116,11 +122,11 @@ fn score(rows: &[Row], title: &str) -> ([f64; 2], [f64; 2]) {
         same.iter().sum::<f64>() / same.len() as f64
     };
     let mut out = format!(
-        "\n{title}\n\n| row | loft table / estimate | attack table / estimate |\n|---|---:|---:|\n"
+        "\n{title}, {posterior:?}\n\n| row | loft table / estimate | attack table / estimate |\n|---|---:|---:|\n"
     );
     let (mut est, mut triv) = ([0.0; 2], [0.0; 2]);
     for r in rows {
-        let (loft, attack) = estimated(r);
+        let (loft, attack) = estimated(r, posterior);
         writeln!(
             out,
             "| {} | {:.1} / {:.1} | {:+.1} / {:+.1} |",
@@ -143,29 +149,38 @@ fn score(rows: &[Row], title: &str) -> ([f64; 2], [f64; 2]) {
 }
 
 /// On the 2010 chart (drivers, attack −5° to +5°), the estimate from ball data and club
-/// speed beats both trivial rules: the impact model reads TrackMan's deliveries back.
+/// speed beats both trivial rules, with either posterior summary: the impact model reads
+/// TrackMan's deliveries back.
 #[test]
 fn the_charts_deliveries_read_back_better_than_the_trivial_rules() {
-    let (est, triv) = score(&chart(), "TrackMan 2010 driver chart");
-    assert!(
-        est[0] < triv[0],
-        "loft {:.2}° vs trivial {:.2}°",
-        est[0],
-        triv[0]
-    );
-    assert!(
-        est[1] < triv[1],
-        "attack {:.2}° vs trivial {:.2}°",
-        est[1],
-        triv[1]
-    );
+    for posterior in [Posterior::Profile, Posterior::Laplace] {
+        let (est, triv) = score(&chart(), "TrackMan 2010 driver chart", posterior);
+        assert!(
+            est[0] < triv[0],
+            "loft {:.2}° vs trivial {:.2}°",
+            est[0],
+            triv[0]
+        );
+        assert!(
+            est[1] < triv[1],
+            "attack {:.2}° vs trivial {:.2}°",
+            est[1],
+            triv[1]
+        );
+    }
 }
 
 /// The published averages (drivers and irons) read back within the issue's limits on
-/// single shots (loft 1.0°, attack 2.0°, mean |error|).
+/// single shots (loft 1.0°, attack 2.0°, mean |error|), with either posterior summary.
 #[test]
 fn the_published_deliveries_read_back_within_the_issues_limits() {
-    let (est, _) = score(&published(), "club_delivery.csv (published averages)");
-    assert!(est[0] <= 1.0, "loft {:.2}°", est[0]);
-    assert!(est[1] <= 2.0, "attack {:.2}°", est[1]);
+    for posterior in [Posterior::Profile, Posterior::Laplace] {
+        let (est, _) = score(
+            &published(),
+            "club_delivery.csv (published averages)",
+            posterior,
+        );
+        assert!(est[0] <= 1.0, "loft {:.2}°", est[0]);
+        assert!(est[1] <= 2.0, "attack {:.2}°", est[1]);
+    }
 }
