@@ -133,7 +133,7 @@ impl<T: Real> Air<T> {
                 let (low, high) = TEMPERATURE_RANGE_C;
                 let t = in_range(w.temperature_c, lit(low), lit(high), Field::Temperature)?;
                 let tk = t + lit(273.15);
-                Ok(lit::<T>(1.458e-6) * tk * tk.sqrt() / (tk + lit(110.4)))
+                Ok(lit::<T>(1.458e-6) * tk * tk.root() / (tk + lit(110.4)))
             }
         }
     }

@@ -43,7 +43,7 @@
 
 use crate::error::{Error, Field, Reason, Result};
 use crate::linalg::Ldl3;
-use crate::real::{Real, lit};
+use crate::real::{Real, length, lit};
 use crate::validate::{finite, in_range, non_negative};
 use nalgebra::{Matrix3, Vector3};
 
@@ -178,7 +178,7 @@ impl<T: Real> CompliantContact<T> {
         let ldl = Ldl3::factor(k)?;
         let e = self.normal_restitution(rated_restitution, v_n);
         let u0_t = u0 + n * v_n;
-        let slip = u0_t.norm();
+        let slip = length(&u0_t);
         let e_t = self.tangential_restitution_at(slip / v_n);
         // grip: target u* = e v_n n − e_t u⁰_t + (1 − g) c P_n, scaled into the energy bound
         let target = n * (e * v_n) - u0_t * e_t;
@@ -187,14 +187,14 @@ impl<T: Real> CompliantContact<T> {
         let (a, target) = self.with_gear_slip(k, &ldl, n, a, &b, target, e_t)?;
         let (target_energy, approach_energy) = (target.dot(&a), u0.dot(&b));
         let (lambda, bound) = if target_energy > approach_energy {
-            ((approach_energy / target_energy).sqrt(), true)
+            ((approach_energy / target_energy).root(), true)
         } else {
             (T::one(), false)
         };
         let grip = a * lambda - b;
         let p_n = n.dot(&grip);
         let p_t = grip - n * p_n;
-        let p_t_norm = p_t.norm();
+        let p_t_norm = length(&p_t);
         let mu = self.friction;
         // NaN-safe towards gripping: μ = ∞ (∞·0 = NaN) always grips
         let grips = !mu.is_finite() || !(p_t_norm > mu * p_n);

@@ -150,7 +150,7 @@ fn contact_direction<T: Real>(
 
 /// `(θ, φ)` with `Ry(−φ) Rz(θ) m = t` (unit vectors), the normal pointing forward.
 fn solve<T: Real>(m: &Vector3<T>, t: &Vector3<T>) -> Result<(T, T)> {
-    let rho = (m.x * m.x + m.y * m.y).sqrt();
+    let rho = (m.x * m.x + m.y * m.y).root();
     let s = t.y / rho;
     if !(s.abs() <= T::one()) {
         return Err(Error::invalid(Field::DynamicLoft, Reason::OutOfRange));
@@ -158,7 +158,7 @@ fn solve<T: Real>(m: &Vector3<T>, t: &Vector3<T>) -> Result<(T, T)> {
     let lift = s.asin();
     let theta = lift - m.y.atan2(m.x);
     // cos(asin s) = √(1 − s²) on the principal branch (libm's f32 `cos` runs in f64)
-    let phi = t.z.atan2(t.x) - m.z.atan2(rho * (T::one() - s * s).sqrt());
+    let phi = t.z.atan2(t.x) - m.z.atan2(rho * (T::one() - s * s).root());
     if !(theta.is_finite() && phi.is_finite()) {
         return Err(Error::invalid(Field::DynamicLoft, Reason::OutOfRange));
     }

@@ -9,7 +9,7 @@ use crate::ball::BallMotion;
 use crate::club::ClubHead;
 use crate::error::{Error, Field, Reason, Result};
 use crate::geometry::{rot_x, rot_y, rot_z, rotation_defect, sin_cos};
-use crate::real::Real;
+use crate::real::{Real, length};
 use crate::validate::{finite, finite_matrix, finite_vector, non_negative};
 use nalgebra::{Matrix3, Vector3};
 
@@ -144,7 +144,7 @@ impl<T: Real> Strike<T> {
         finite_vector(&club.spin_radps, Field::ClubSpin)?;
         finite_matrix(&club.orientation, Field::ClubOrientation)?;
         let (defect, det) = rotation_defect(&club.orientation);
-        let tol = T::default_epsilon().sqrt();
+        let tol = T::default_epsilon().root();
         if !(defect <= tol && (det - T::one()).abs() <= tol) {
             return Err(Error::invalid(Field::ClubOrientation, Reason::NotRotation));
         }
@@ -176,6 +176,6 @@ impl<T: Real> Strike<T> {
     /// Club head speed |v_c| (m/s): the denominator of the smash factor.
     #[must_use]
     pub fn club_speed_mps(&self) -> T {
-        self.club.velocity_mps.norm()
+        length(&self.club.velocity_mps)
     }
 }

@@ -12,7 +12,7 @@
 use crate::club::FaceShape;
 use crate::delivery::FaceLocation;
 use crate::error::{Error, Result};
-use crate::real::{Real, lit};
+use crate::real::{Real, length, lit};
 use nalgebra::Vector3;
 
 /// The contact point and outward face normal, in E.
@@ -45,13 +45,13 @@ pub fn contact<T: Real>(
     if !(s_sq > lit::<T>(MIN_S_SQ_IN_EPS) * T::default_epsilon()) {
         return Err(Error::OffFace);
     }
-    let s = s_sq.sqrt();
+    let s = s_sq.root();
     let ky = dy * face.depth_over_roll_sq;
     let kz = dz * face.depth_over_bulge_sq;
     let depth = -(dy * ky + dz * kz) / (T::one() + s);
     let point = cg_to_face_m + Vector3::new(depth, dy, dz);
     let normal = Vector3::new(s, ky, kz);
-    let len = normal.norm();
+    let len = length(&normal);
     if !(len.is_finite() && len > T::zero() && point.iter().all(|x| x.is_finite())) {
         return Err(Error::OffFace);
     }

@@ -14,7 +14,7 @@
 use crate::ball::BallMotion;
 use crate::error::{Field, Result};
 use crate::geometry::sin_cos;
-use crate::real::Real;
+use crate::real::{Real, length};
 use crate::validate::{finite, non_negative};
 use nalgebra::Vector3;
 
@@ -46,10 +46,10 @@ impl<T: Real> LaunchMetrics<T> {
     pub fn from_motion(motion: &BallMotion<T>, club_speed_mps: T) -> Self {
         let v = &motion.velocity_mps;
         let w = &motion.spin_radps;
-        let speed = v.norm();
+        let speed = length(v);
         // sin ψ, cos ψ from the components: no trigonometry (f32 sin/cos run in soft f64 on
         // a Cortex-M4F), and exact where atan2 then sin_cos would round twice.
-        let horizontal = (v.x * v.x + v.z * v.z).sqrt();
+        let horizontal = (v.x * v.x + v.z * v.z).root();
         let direction = v.z.atan2(v.x);
         let (sin_psi, cos_psi) = if horizontal > T::zero() {
             (v.z / horizontal, v.x / horizontal)
@@ -62,7 +62,7 @@ impl<T: Real> LaunchMetrics<T> {
             ball_speed_mps: speed,
             launch_angle_rad: v.y.atan2(horizontal),
             launch_direction_rad: direction,
-            spin_radps: w.norm(),
+            spin_radps: length(w),
             backspin_radps: backspin,
             sidespin_radps: sidespin,
             spin_axis_rad: sidespin.atan2(backspin),

@@ -1,12 +1,84 @@
 //! Precision: every numerical routine is generic over [`Real`] (`f32` or `f64`).
 
-use nalgebra::RealField;
+use nalgebra::{Dim, RealField, Vector, storage::Storage};
 
-/// A floating-point scalar the core can compute in: `f32` or `f64` (any
-/// [`RealField`] that is `Copy`). Precision is chosen only at the edges.
-pub trait Real: RealField + Copy {}
+/// A floating-point scalar the core can compute in: `f32` or `f64` (a [`RealField`] that
+/// is `Copy` and has a [`Root`]). Precision is chosen only at the edges.
+pub trait Real: RealField + Copy + Root {}
 
-impl<T: RealField + Copy> Real for T {}
+impl<T: RealField + Copy + Root> Real for T {}
+
+/// The correctly rounded square root (IEEE 754), the one the core takes.
+///
+/// For `f64`, and for `f32` without a hardware FPU, it is libm's (nalgebra's
+/// `ComplexField::sqrt` with `libm-force`). For `f32` on an ARM target with a hardware
+/// floating-point unit (`target_abi = "eabihf"`: the Cortex-M4F and M7), it is the FPU's
+/// `VSQRT.F32`, which IEEE 754 also requires to be correctly rounded: the same bits as libm's
+/// software `sqrtf` (the on-target suite checks every result against the host's), in about
+/// a tenth of the instructions (docs/firmware.md).
+pub trait Root: Sized {
+    /// `√self`, correctly rounded.
+    #[must_use]
+    fn root(self) -> Self;
+}
+
+impl Root for f64 {
+    #[inline(always)]
+    fn root(self) -> f64 {
+        nalgebra::ComplexField::sqrt(self)
+    }
+}
+
+impl Root for f32 {
+    #[cfg(not(all(target_arch = "arm", target_abi = "eabihf")))]
+    #[inline(always)]
+    fn root(self) -> f32 {
+        nalgebra::ComplexField::sqrt(self)
+    }
+
+    #[cfg(all(target_arch = "arm", target_abi = "eabihf"))]
+    #[inline(always)]
+    fn root(self) -> f32 {
+        hardware::sqrt(self)
+    }
+}
+
+/// The FPU's square root on hard-float ARM targets.
+#[cfg(all(target_arch = "arm", target_abi = "eabihf"))]
+mod hardware {
+    /// `VSQRT.F32` on `x`. The value goes in and out through general registers (Rust's
+    /// `sreg` operand class needs the unstable `vfp2` target feature); `s0` is saved and
+    /// restored around the instruction on the stack.
+    #[allow(unsafe_code)]
+    #[inline(always)]
+    pub(super) fn sqrt(x: f32) -> f32 {
+        let bits: u32;
+        // SAFETY: the instructions touch only `s0` (pushed first, popped last), the two
+        // general registers named as operands and the stack below the stack pointer;
+        // VSQRT reads and writes no memory and sets no condition flags (only FPSCR's
+        // cumulative exception bits, as any floating-point operation does).
+        unsafe {
+            core::arch::asm!(
+                "vpush {{s0}}",
+                "vmov s0, {x}",
+                "vsqrt.f32 s0, s0",
+                "vmov {r}, s0",
+                "vpop {{s0}}",
+                x = in(reg) x.to_bits(),
+                r = lateout(reg) bits,
+                options(pure, readonly, preserves_flags)
+            );
+        }
+        f32::from_bits(bits)
+    }
+}
+
+/// The Euclidean length `√(v·v)` of a vector: nalgebra's `norm`, with [`Root::root`].
+#[inline(always)]
+#[must_use]
+pub fn length<T: Real, D: Dim, S: Storage<T, D>>(v: &Vector<T, D, S>) -> T {
+    v.norm_squared().root()
+}
 
 /// Converts an `f64` constant into the working precision (rounding to nearest).
 #[inline(always)]

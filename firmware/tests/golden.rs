@@ -251,6 +251,50 @@ mod tests {
         ground_bit_identity::<f64>(|c| &c.host_f64);
     }
 
+    /// The core's square root (the FPU's `VSQRT.F32` on the M4F and M7, libm's software
+    /// `sqrtf` on the M0) is libm's, bit for bit, on 65,536 values spread over both signs
+    /// and every exponent, and on zeros, infinities and NaN.
+    #[test]
+    fn square_root_is_libms_bit_for_bit() {
+        use carry_core::real::Root;
+        let same = |x: f32| {
+            let (a, b) = (x.root(), nalgebra::ComplexField::sqrt(x));
+            a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan())
+        };
+        let mut differ = 0u32;
+        let mut checked = 0u32;
+        let mut bits = 0u32;
+        loop {
+            checked += 1;
+            if !same(f32::from_bits(bits)) {
+                differ += 1;
+            }
+            match bits.checked_add(65_537) {
+                Some(next) => bits = next,
+                None => break,
+            }
+        }
+        for x in [
+            0.0,
+            -0.0,
+            f32::INFINITY,
+            f32::NEG_INFINITY,
+            f32::NAN,
+            f32::MIN_POSITIVE,
+        ] {
+            checked += 1;
+            if !same(x) {
+                differ += 1;
+            }
+        }
+        defmt::info!(
+            "sqrt f32: {=u32} values, {=u32} differ from libm",
+            checked,
+            differ
+        );
+        defmt::assert_eq!(differ, 0);
+    }
+
     /// The host suite's tolerances: 1e-9 relative in f64, 4e-6 in f32.
     #[test]
     fn impact_matches_reference() {

@@ -153,7 +153,7 @@ impl<T: Real> Dynamics<'_, T> {
         if drag || lift || decay {
             let vr = if wind { v - p.wind.at(y[Y]) } else { v };
             let speed_sq = vr.norm_squared();
-            let speed = speed_sq.sqrt();
+            let speed = speed_sq.root();
             (f.relative_velocity, f.speed, f.speed_sq) = (vr, speed, speed_sq);
             if drag || lift {
                 let (kd, kl) = p.aero.forces.factors(speed, speed_sq, s, drag, lift);

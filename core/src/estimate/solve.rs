@@ -109,7 +109,7 @@ fn unknowns<T: Real>(x: &V7<T>) -> Unknowns<T> {
 }
 
 fn units<T: Real>() -> V7<T> {
-    let eps = T::default_epsilon().sqrt();
+    let eps = T::default_epsilon().root();
     V7::from(UNIT.map(|u| lit::<T>(u) * eps))
 }
 
@@ -159,7 +159,7 @@ pub(super) fn run<T: Real>(
     let mut sigma = noise.ball;
     let spin = crate::real::larger(measured.spin_radps, sigma.spin_radps);
     let wobble = sigma.spin_radps / spin;
-    sigma.spin_axis_rad = (sigma.spin_axis_rad * sigma.spin_axis_rad + wobble * wobble).sqrt();
+    sigma.spin_axis_rad = (sigma.spin_axis_rad * sigma.spin_axis_rad + wobble * wobble).root();
     let problem = Problem {
         model,
         y: measured.to_array(),
@@ -492,7 +492,7 @@ fn valley<T: Real>(
         return None;
     }
     // the height's conditional direction, one Laplace σ long (sᵀ A s = 1)
-    let s: V7<T> = cov.column(HEIGHT) / chh.sqrt();
+    let s: V7<T> = cov.column(HEIGHT) / chh.root();
     let c0 = problem.cost(r, x);
     let probe = lit::<T>(PROBE);
     let far = lit::<T>(FAR);
@@ -507,7 +507,7 @@ fn valley<T: Real>(
                 break;
             };
             let dc = crate::real::larger(cp - c0, t * t / (far * far));
-            *width = t / dc.sqrt();
+            *width = t / dc.root();
             *dir = (xp - x) / (sign * t);
             if !(round == 0 && *width > probe) {
                 break;
@@ -520,7 +520,7 @@ fn valley<T: Real>(
     // split normal: p(t) ∝ exp(−t²/2σ±²) for t ≷ 0, a = √(2/π)/(σ₊ + σ₋);
     // E[t; t>0] = a σ₊², E[t; t<0] = −a σ₋², E[t²; t≷0] = σ±³/(σ₊ + σ₋)
     let sum = up + down;
-    let a = lit::<T>(core::f64::consts::FRAC_2_PI).sqrt() / sum;
+    let a = lit::<T>(core::f64::consts::FRAC_2_PI).root() / sum;
     let mean = du * (a * up * up) - dd * (a * down * down);
     let second = du * du.transpose() * (up * up * up / sum)
         + dd * dd.transpose() * (down * down * down / sum);
@@ -559,7 +559,7 @@ fn posterior<T: Real>(
     let sd = |c: V7<T>| -> Result<T> {
         let var = c.dot(&(cov * c));
         Ok(if var > T::zero() {
-            var.sqrt()
+            var.root()
         } else {
             T::zero()
         })

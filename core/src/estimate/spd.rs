@@ -44,7 +44,7 @@ impl<T: Real> Cholesky<T> {
             if !(aii > T::zero() && aii.is_finite()) {
                 return Err(Error::Singular);
             }
-            *v = T::one() / aii.sqrt();
+            *v = T::one() / aii.root();
         }
         let di = |i: usize| d.get(i).copied().unwrap_or_else(T::zero);
         let tiny = lit::<T>(7.0) * T::default_epsilon();
@@ -57,7 +57,7 @@ impl<T: Real> Cholesky<T> {
             if !(s > tiny) {
                 return Err(Error::Singular);
             }
-            let ljj = s.sqrt();
+            let ljj = s.root();
             put(&mut l, j, j, ljj);
             for i in j + 1..7 {
                 let mut s = at(a, i, j) * di(i) * di(j);

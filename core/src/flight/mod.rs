@@ -41,7 +41,7 @@ use crate::ball::{Ball, BallMotion};
 use crate::error::{Error, Field, Reason, Result};
 use crate::ground::Hops;
 use crate::integrator::{Method, events, integrate_to_event};
-use crate::real::{Real, lit};
+use crate::real::{Real, length, lit};
 use crate::scene::{PreparedScene, Scene};
 use crate::trajectory::Contact;
 use nalgebra::Vector3;
@@ -108,10 +108,10 @@ fn run<'s, T: Real, R: Rhs<T>>(
 ) -> Result<FlightOutcome<T>> {
     let launch = launch.validated()?;
     let method = integrator.method()?;
-    if !(launch.velocity_mps.norm() <= lit(MAX_BALL_SPEED_MPS)) {
+    if !(length(&launch.velocity_mps) <= lit(MAX_BALL_SPEED_MPS)) {
         return Err(Error::invalid(Field::BallVelocity, Reason::OutOfRange));
     }
-    let spin = launch.spin_radps.norm();
+    let spin = length(&launch.spin_radps);
     if !(spin <= lit(MAX_SPIN_RADPS)) {
         return Err(Error::invalid(Field::BallSpin, Reason::OutOfRange));
     }
@@ -157,7 +157,7 @@ fn run<'s, T: Real, R: Rhs<T>>(
     // The step ends are checked finite, but the landing is interpolated inside the step:
     // with absurd (finite) launches the interpolant overflows (∞ − ∞ = NaN; found by
     // fuzzing, issue 7). Never report it.
-    let speed = Vector3::new(y[3], y[4], y[5]).norm();
+    let speed = length(&Vector3::new(y[3], y[4], y[5]));
     if !(y.iter().all(|x| x.is_finite())
         && speed.is_finite()
         && landing.time.is_finite()
@@ -201,7 +201,7 @@ fn run<'s, T: Real, R: Rhs<T>>(
         apex_time_s,
         flight_time_s: landing.time,
         landing_angle_rad: (-velocity.y).atan2(velocity.x.hypot(velocity.z)),
-        landing_speed_mps: velocity.norm(),
+        landing_speed_mps: length(&velocity),
         landing_spin_radps: y[S],
         landing_position_m: position,
         landing_velocity_mps: velocity,
@@ -268,7 +268,7 @@ fn into_the_ground<T: Real>(
         apex_time_s: T::zero(),
         flight_time_s: T::zero(),
         landing_angle_rad: (-velocity.y).atan2(velocity.x.hypot(velocity.z)),
-        landing_speed_mps: velocity.norm(),
+        landing_speed_mps: length(&velocity),
         landing_spin_radps: spin,
         landing_position_m: p0,
         landing_velocity_mps: velocity,

@@ -68,7 +68,7 @@ pub(crate) fn aimed_hop<T: Real>(
             let delta = n.dot(&p1) - plane.offset;
             let vn = v1.dot(&n);
             let disc = vn * vn - lit::<T>(2.0) * f1.acceleration.dot(&n) * delta;
-            let dt = lit::<T>(2.0) * delta / (disc.sqrt() - vn);
+            let dt = lit::<T>(2.0) * delta / (disc.root() - vn);
             let within = dt.abs() <= lit::<T>(AIMED_MAX_CORRECTION) * h;
             (vn < T::zero() && within).then_some((p1, v1, dt))
         })

@@ -34,7 +34,7 @@
 //! stops at rolling.
 
 use super::surface::{PENNER_RESTITUTION_0, Turf};
-use crate::real::{Real, larger, lit, smaller};
+use crate::real::{Real, larger, length, lit, smaller};
 use nalgebra::Vector3;
 
 /// Penner's crater tilt at the reference impact (rad): 15.4°.
@@ -91,13 +91,13 @@ fn tangent_direction<T: Real>(
         return vt / len;
     }
     let in_plane = spin - n * spin.dot(n);
-    let s = in_plane.norm();
+    let s = length(&in_plane);
     if s > T::zero() {
         // Backspin axis b̂ = t̂ × n̂ ⇒ t̂ = n̂ × b̂.
         return n.cross(&(in_plane / s));
     }
     let x = Vector3::x() - n * n.x;
-    let len = x.norm();
+    let len = length(&x);
     if len > T::zero() {
         x / len
     } else {
@@ -125,12 +125,12 @@ pub(crate) fn rebound<T: Real>(
     // `u² + v_n'² = |v|²` below holds to rounding (no `hypot`: libm's single-precision
     // one works in f64, software on a Cortex-M4F).
     let speed_sq = velocity.norm_squared();
-    let speed = speed_sq.sqrt();
-    let vt = larger(speed_sq - vn * vn, T::zero()).sqrt();
+    let speed = speed_sq.root();
+    let vt = larger(speed_sq - vn * vn, T::zero()).root();
     // The direction of the tangential velocity (off the critical path: only `w` and the
     // rebound's direction need it).
     let vt_vec = velocity + n * vn;
-    let t = tangent_direction(&vt_vec, vt_vec.norm(), spin, n);
+    let t = tangent_direction(&vt_vec, length(&vt_vec), spin, n);
     let b = t.cross(n);
     let w = spin.dot(&b);
     let phi = crate::geometry::atan2_first_quadrant(vt, vn);

@@ -7,7 +7,7 @@ use super::aimed;
 use crate::aero::{Dynamics, ForceEvaluation, ForceField, S, State};
 use crate::error::{Error, Result};
 use crate::integrator::{Method, events, integrate_to_event};
-use crate::real::{Real, larger, lit, smaller};
+use crate::real::{Real, larger, length, lit, smaller};
 use crate::trajectory::{Contact, Plane, Recorder, Stats};
 use nalgebra::Vector3;
 
@@ -115,7 +115,7 @@ pub(crate) fn low_hop<T: Real, H: Hopper<T>>(
 ) -> Option<Contact<T>> {
     // The spin axis is fixed in flight: its magnitude and direction once (each `norm` is a
     // software square root on a Cortex-M4F).
-    let spin0 = from.spin.norm();
+    let spin0 = length(&from.spin);
     let axis = if spin0 > T::zero() {
         from.spin / spin0
     } else {
@@ -245,7 +245,7 @@ pub(crate) fn hop_landing<T: Real>(vn: T, an: T, jn: T) -> Option<T> {
     if !(disc >= T::zero()) {
         return None;
     }
-    let tau = two * vn / (disc.sqrt() - b);
+    let tau = two * vn / (disc.root() - b);
     (tau > T::zero() && tau.is_finite()).then_some(tau)
 }
 
@@ -341,7 +341,7 @@ impl<'s, T: Real> Hops<'s, T> {
         if !(limit > T::zero()) {
             return Err(Error::TimeLimit);
         }
-        let spin = from.spin.norm();
+        let spin = length(&from.spin);
         let axis = if spin > T::zero() {
             from.spin / spin
         } else {

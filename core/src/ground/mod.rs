@@ -22,7 +22,7 @@ pub mod roll;
 pub mod surface;
 
 use crate::error::{Error, Field, Reason, Result};
-use crate::real::{Real, lit};
+use crate::real::{Real, length, lit};
 use crate::trajectory::{Contact, Plane, Recorder, Stats};
 use crate::validate::finite_vector;
 #[cfg(test)]
@@ -87,7 +87,7 @@ impl<T: Real> Ground<T> {
     pub fn prepare(&self, radius_m: T) -> Result<PreparedGround<T>> {
         let turf = self.surface.turf()?;
         let n = finite_vector(&self.normal, Field::GroundNormal)?;
-        let len = n.norm();
+        let len = length(&n);
         if !(len > T::zero() && len.is_finite()) {
             return Err(Error::invalid(Field::GroundNormal, Reason::NotPositive));
         }
@@ -245,10 +245,10 @@ pub(crate) fn run_out<T: Real, H: Hopper<T>>(
     }
     let along = rest - first.position;
     let forward = Vector3::new(first.velocity.x, T::zero(), first.velocity.z);
-    let roll = along.norm();
+    let roll = length(&along);
     // (No `hypot`: the distances are metres, far from overflow; libm's is out of line.)
     let (dx, dz) = (rest.x - launch_position.x, rest.z - launch_position.z);
-    let total = (dx * dx + dz * dz).sqrt();
+    let total = (dx * dx + dz * dz).root();
     Ok(Rollout {
         total_m: total,
         roll_m: if along.dot(&forward) < T::zero() {

@@ -27,7 +27,7 @@
 //! slope's pull is below the resistance at rest, `|g⃗_t| ≤ ρ₀ g_n`; on a steeper slope it
 //! rolls on until [`ROLL_TIME_CAP_S`].
 
-use crate::real::{Real, larger, lit, smaller, to_f64};
+use crate::real::{Real, larger, length, lit, smaller, to_f64};
 use crate::trajectory::{Recorder, Sample};
 use nalgebra::Vector3;
 
@@ -149,7 +149,7 @@ impl<T: Real> Roll<'_, '_, T> {
         let mut t = T::zero();
         let steps = (ROLL_TIME_CAP_S / ROLL_STEP_S) as u32;
         for _ in 0..steps {
-            let size = slip.norm();
+            let size = length(&slip);
             if !(size > T::zero() && grip > T::zero()) {
                 break;
             }
@@ -164,7 +164,7 @@ impl<T: Real> Roll<'_, '_, T> {
             let v1 = v + (g_t - dir * grip) * dt;
             let w1 = w + n.cross(&dir) * (spin_per_grip * grip * dt);
             // The grass drag on the speed (never a gain, never a reversal).
-            let speed = v1.norm();
+            let speed = length(&v1);
             let speed1 = larger(speed - resist * dt, T::zero()) / (T::one() + drag * speed * dt);
             let v1 = if speed > T::zero() {
                 v1 * (speed1 / speed)
@@ -227,7 +227,7 @@ impl<T: Real> Roll<'_, '_, T> {
             return self.level(p0, v0, resist, cap);
         }
         let pull = g_t * five_sevenths;
-        let holds = g_t.norm() <= self.resistance * g_n;
+        let holds = length(&g_t) <= self.resistance * g_n;
         let h = lit::<T>(ROLL_STEP_S);
         let half_h = h * lit(0.5);
         let (mut p, mut v) = (p0, v0);
@@ -241,7 +241,7 @@ impl<T: Real> Roll<'_, '_, T> {
             // never a reversal at any speed (an explicit step of `B v²` diverges above
             // `v ≈ 1/(B h)`).
             let va = v + pull * half_h;
-            let s = va.norm();
+            let s = length(&va);
             if holds && s <= resist * h {
                 // Stops within this step, where the pull cannot start it again.
                 let ts = if resist > T::zero() {
@@ -292,7 +292,7 @@ impl<T: Real> Roll<'_, '_, T> {
     ///
     /// (`B = 0`: `v = v₀ − Aτ`, `x = v₀τ − Aτ²/2`).
     fn level(mut self, p0: Vector3<T>, v0: Vector3<T>, resist: T, cap: T) -> RollEnd<T> {
-        let u = v0.norm();
+        let u = length(&v0);
         if !(u > T::zero()) {
             self.record(T::zero(), p0, Vector3::zeros());
             return RollEnd {
@@ -306,7 +306,7 @@ impl<T: Real> Roll<'_, '_, T> {
         if !(resist > T::zero() && c > T::zero()) {
             return self.level_constant(p0, dir, u, resist, cap);
         }
-        let root_c = c.sqrt();
+        let root_c = c.root();
         let w = u * root_c;
         let k = resist * root_c;
         let theta0 = crate::geometry::atan2_first_quadrant(w, T::one());

@@ -205,8 +205,8 @@ pub(crate) fn scaled_error<T: Real>(h: T, k: [&State<T>; 6], weight: &State<T>) 
 /// instead of a software `pow` (which dominated the per-step overhead on Cortex-M4F).
 #[inline]
 fn inv_root_3_16<T: Real>(x: T) -> T {
-    let r8 = x.sqrt().sqrt().sqrt();
-    T::one() / (r8 * r8.sqrt())
+    let r8 = x.root().root().root();
+    T::one() / (r8 * r8.root())
 }
 
 /// Adaptive Dormand–Prince 5(4) to the landing.
