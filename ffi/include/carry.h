@@ -18,6 +18,14 @@
 // and the CLI's default), with the `friction`… parameters of the struct.
 #define CARRY_CONTACT_COMPLIANT 1
 
+// `CarryEstimateInput::posterior`: the posterior mean and calibrated 1σ (the strike
+// height's profile posterior; the default).
+#define CARRY_POSTERIOR_PROFILE 0
+
+// `CarryEstimateInput::posterior`: the most probable delivery and the Gauss–Newton 1σ
+// (about half the instructions; the 1σ of attack, spin loft and strike height too narrow).
+#define CARRY_POSTERIOR_LAPLACE 1
+
 // `CarryEstimateInput::measured` bit: the club speed was measured.
 #define CARRY_MEASURED_CLUB_SPEED 1
 
@@ -856,6 +864,9 @@ typedef struct CarryEstimateInput_f32 {
   uint32_t max_iterations;
   // Stop when the Newton step is below this many posterior σ, in (0, 1].
   float tolerance;
+  // The posterior summary: `CARRY_POSTERIOR_PROFILE` (default) or
+  // `CARRY_POSTERIOR_LAPLACE`; anything else is `CARRY_ERR_UNKNOWN_OPTION`.
+  uint32_t posterior;
 } CarryEstimateInput_f32;
 
 // Estimate input in single precision.
@@ -919,6 +930,9 @@ typedef struct CarryEstimateInput_f64 {
   uint32_t max_iterations;
   // Stop when the Newton step is below this many posterior σ, in (0, 1].
   double tolerance;
+  // The posterior summary: `CARRY_POSTERIOR_PROFILE` (default) or
+  // `CARRY_POSTERIOR_LAPLACE`; anything else is `CARRY_ERR_UNKNOWN_OPTION`.
+  uint32_t posterior;
 } CarryEstimateInput_f64;
 
 // Estimate input in double precision.

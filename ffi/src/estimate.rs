@@ -2,12 +2,19 @@
 //! docs/estimate.md) behind the C ABI.
 
 use crate::club::{CarryBall, CarryClub};
-use crate::error::Result;
+use crate::error::{CARRY_ERR_UNKNOWN_OPTION, Result};
 use carry_core::estimate::{
     self, BallData, ClubData, ClubEstimate, Noise, Prior, Settings, Unknowns,
 };
 use carry_core::presets::Preset;
 use carry_core::real::Real;
+
+/// `CarryEstimateInput::posterior`: the posterior mean and calibrated 1σ (the strike
+/// height's profile posterior; the default).
+pub const CARRY_POSTERIOR_PROFILE: u32 = 0;
+/// `CarryEstimateInput::posterior`: the most probable delivery and the Gauss–Newton 1σ
+/// (about half the instructions; the 1σ of attack, spin loft and strike height too narrow).
+pub const CARRY_POSTERIOR_LAPLACE: u32 = 1;
 
 /// `CarryEstimateInput::measured` bit: the club speed was measured.
 pub const CARRY_MEASURED_CLUB_SPEED: u32 = 1;
@@ -84,6 +91,9 @@ pub struct CarryEstimateInput<T> {
     pub max_iterations: u32,
     /// Stop when the Newton step is below this many posterior σ, in (0, 1].
     pub tolerance: T,
+    /// The posterior summary: `CARRY_POSTERIOR_PROFILE` (default) or
+    /// `CARRY_POSTERIOR_LAPLACE`; anything else is `CARRY_ERR_UNKNOWN_OPTION`.
+    pub posterior: u32,
 }
 
 /// The estimated delivery, or its 1σ (rad, m, m/s).
@@ -205,6 +215,7 @@ impl<T: Real> CarryEstimateInput<T> {
             prior_sd: from_core(&s.prior.sd),
             max_iterations: u32::from(s.max_iterations),
             tolerance: s.tolerance,
+            posterior: CARRY_POSTERIOR_PROFILE,
         }
     }
 }
@@ -225,7 +236,8 @@ impl<T: Real> CarryDeliveryData<T> {
 ///
 /// # Errors
 /// The core's errors (`CARRY_ERR_INVALID_INPUT` for a bad measurement, noise, prior,
-/// budget or tolerance; `CARRY_ERR_OTHER` for no convergence or an ill-posed problem).
+/// budget or tolerance; `CARRY_ERR_OTHER` for no convergence or an ill-posed problem);
+/// `CARRY_ERR_UNKNOWN_OPTION` for an unknown `posterior`.
 pub fn run<T: Real>(input: &CarryEstimateInput<T>) -> Result<CarryEstimateResult<T>> {
     let club = input.club.spec()?.validate()?;
     let ball = input.ball.ball()?;
@@ -251,8 +263,11 @@ pub fn run<T: Real>(input: &CarryEstimateInput<T>) -> Result<CarryEstimateResult
         // out of 1..=100 (also past u8): the core's Iterations error
         max_iterations: u8::try_from(input.max_iterations).unwrap_or(0),
         tolerance: input.tolerance,
-        // the default summary (calibrated 1σ); the C input has no field for it
-        posterior: estimate::Posterior::Profile,
+        posterior: match input.posterior {
+            CARRY_POSTERIOR_PROFILE => estimate::Posterior::Profile,
+            CARRY_POSTERIOR_LAPLACE => estimate::Posterior::Laplace,
+            _ => return Err(CARRY_ERR_UNKNOWN_OPTION),
+        },
     };
     let e = estimate::estimate(
         &club,

@@ -3,11 +3,14 @@
 //! error codes.
 
 use carry_core::Ball;
-use carry_core::estimate::{ClubData, Settings, Unknowns, estimate, predict};
+use carry_core::estimate::{ClubData, Posterior, Settings, Unknowns, estimate, predict};
 use carry_core::presets::Preset;
 use carry_core::units::deg;
 use carry_ffi::error::CarryError::*;
-use carry_ffi::estimate::{CARRY_MEASURED_CLUB_SPEED, CarryEstimateResult};
+use carry_ffi::estimate::{
+    CARRY_MEASURED_CLUB_SPEED, CARRY_POSTERIOR_LAPLACE, CARRY_POSTERIOR_PROFILE,
+    CarryEstimateResult,
+};
 use carry_ffi::*;
 use core::ptr::{null, null_mut};
 
@@ -108,8 +111,63 @@ fn estimate_f32_runs_and_errors_are_typed() {
     // SAFETY: valid pointers.
     let rc = unsafe { carry_estimate_f32(&bad, &mut out) };
     assert_eq!(rc, CARRY_ERR_INVALID_INPUT);
+    bad = input;
+    bad.posterior = 2;
+    // SAFETY: valid pointers.
+    let rc = unsafe { carry_estimate_f32(&bad, &mut out) };
+    assert_eq!(rc, CARRY_ERR_UNKNOWN_OPTION);
     let mut unknown = core::mem::MaybeUninit::<CarryEstimateInputF32>::uninit();
     // SAFETY: a NUL-terminated name and a writable struct.
     let rc = unsafe { carry_estimate_input_default_f32(c"putter".as_ptr(), unknown.as_mut_ptr()) };
     assert_eq!(rc, CARRY_ERR_UNKNOWN_NAME);
+}
+
+/// `posterior`: the default is the calibrated profile summary; `CARRY_POSTERIOR_LAPLACE` is
+/// the core's `Posterior::Laplace`, bit for bit.
+#[test]
+fn estimate_takes_the_posterior_summary() {
+    let preset = Preset::find("driver").expect("driver");
+    let club = preset.spec::<f64>().validate().expect("club");
+    let truth = Unknowns {
+        face_angle_rad: deg(-1.0),
+        club_path_rad: deg(2.0),
+        dynamic_loft_rad: deg(12.0),
+        attack_angle_rad: deg(-1.5),
+        impact_toe_m: 0.006,
+        impact_height_m: 0.004,
+        club_speed_mps: 45.0,
+    };
+    let y = predict(&club, &Ball::standard(), &truth).expect("launch");
+    let mut input = driver_input::<f64>(carry_estimate_input_default_f64);
+    assert_eq!(input.posterior, CARRY_POSTERIOR_PROFILE);
+    input.measured_ball.ball_speed_mps = y.ball_speed_mps;
+    input.measured_ball.launch_angle_rad = y.launch_angle_rad;
+    input.measured_ball.launch_direction_rad = y.launch_direction_rad;
+    input.measured_ball.spin_radps = y.spin_radps;
+    input.measured_ball.spin_axis_rad = y.spin_axis_rad;
+    input.posterior = CARRY_POSTERIOR_LAPLACE;
+    let mut out = CarryEstimateResult::<f64>::default();
+    // SAFETY: valid pointers.
+    let rc = unsafe { carry_estimate_f64(&input, &mut out) };
+    assert_eq!(rc, CARRY_OK);
+    let settings = Settings {
+        posterior: Posterior::Laplace,
+        ..Settings::typical(&preset.typical)
+    };
+    let core = estimate(
+        &club,
+        &Ball::standard(),
+        &y,
+        &ClubData::default(),
+        &settings,
+    )
+    .expect("estimate");
+    assert_eq!(
+        out.value.impact_height_m.to_bits(),
+        core.value.impact_height_m.to_bits()
+    );
+    assert_eq!(
+        out.sd.attack_angle_rad.to_bits(),
+        core.sd.attack_angle_rad.to_bits()
+    );
 }

@@ -4,9 +4,7 @@
 //! anything else a typed error.
 #![no_main]
 
-use carry_core::estimate::{
-    BallData, ClubData, Posterior, Prior, Settings, Unknowns, estimate,
-};
+use carry_core::estimate::{BallData, ClubData, Posterior, Prior, Settings, Unknowns, estimate};
 use carry_core::real::lit;
 use carry_core::{Ball, ClubSpec, PRESETS, Real, Result};
 use carry_fuzz::Bytes;

@@ -2,7 +2,9 @@
 //! struct contents (NaN, ±∞, extremes, out-of-range selectors), NULL pointers, no / tiny /
 //! ample trajectory buffers. Every call must return one of the `carry_error_t` codes; a
 //! success (or a full buffer) must leave finite results and a sample count within the
-//! capacity.
+//! capacity. The estimator (club data from ball data) too: arbitrary ball data, club data,
+//! noise, prior, budget and posterior selector; a success must leave finite estimates and
+//! non-negative 1σ.
 //!
 //! Work bounds as the flight target's (docs/robustness.md): fixed or maximum steps below
 //! `time limit / 2e5`, updrafts that grow without bound and absurd drag scales are legal
@@ -16,6 +18,7 @@
 
 use carry_core::real::{Real, lit, to_f64};
 use carry_ffi::error::ALL;
+use carry_ffi::estimate::{CarryDeliveryData, CarryEstimateInput, CarryEstimateResult};
 use carry_ffi::scene::*;
 use carry_ffi::settings::*;
 use carry_ffi::*;
@@ -198,10 +201,18 @@ trait Api: Real + Default {
         n: *mut usize,
         o: *mut CarryShotResult<Self>,
     ) -> CarryError;
+    unsafe fn estimate_default(
+        name: *const core::ffi::c_char,
+        o: *mut CarryEstimateInput<Self>,
+    ) -> CarryError;
+    unsafe fn estimate(
+        i: *const CarryEstimateInput<Self>,
+        o: *mut CarryEstimateResult<Self>,
+    ) -> CarryError;
 }
 
 macro_rules! api {
-    ($t:ty, $i:ident, $f:ident, $s:ident) => {
+    ($t:ty, $i:ident, $f:ident, $s:ident, $ed:ident, $e:ident) => {
         impl Api for $t {
             unsafe fn impact(
                 i: *const CarryImpactInput<Self>,
@@ -227,15 +238,123 @@ macro_rules! api {
             ) -> CarryError {
                 unsafe { $s(i, s, c, n, o) }
             }
+            unsafe fn estimate_default(
+                name: *const core::ffi::c_char,
+                o: *mut CarryEstimateInput<Self>,
+            ) -> CarryError {
+                unsafe { $ed(name, o) }
+            }
+            unsafe fn estimate(
+                i: *const CarryEstimateInput<Self>,
+                o: *mut CarryEstimateResult<Self>,
+            ) -> CarryError {
+                unsafe { $e(i, o) }
+            }
         }
     };
 }
-api!(f32, carry_impact_f32, carry_flight_f32, carry_shot_f32);
-api!(f64, carry_impact_f64, carry_flight_f64, carry_shot_f64);
+api!(
+    f32,
+    carry_impact_f32,
+    carry_flight_f32,
+    carry_shot_f32,
+    carry_estimate_input_default_f32,
+    carry_estimate_f32
+);
+api!(
+    f64,
+    carry_impact_f64,
+    carry_flight_f64,
+    carry_shot_f64,
+    carry_estimate_input_default_f64,
+    carry_estimate_f64
+);
 
 /// NULL (rarely) or the address of `x`.
 fn ptr_or_null<P>(b: &mut Bytes<'_>, x: *mut P) -> *mut P {
     if b.byte() < 8 { null_mut() } else { x }
+}
+
+fn delivery_data<T: Real>(b: &mut Bytes<'_>, d: &mut CarryDeliveryData<T>, scale: f64) {
+    d.face_angle_rad = f(b, -0.6 * scale, 0.6 * scale);
+    d.club_path_rad = f(b, -0.6 * scale, 0.6 * scale);
+    d.dynamic_loft_rad = f(b, -0.3 * scale, 1.2 * scale);
+    d.attack_angle_rad = f(b, -0.5 * scale, 0.5 * scale);
+    d.impact_toe_m = f(b, -0.05 * scale, 0.05 * scale);
+    d.impact_height_m = f(b, -0.05 * scale, 0.05 * scale);
+    d.club_speed_mps = f(b, -5.0, 80.0 * scale);
+}
+
+/// One estimate from a preset's defaults with arbitrary measurements and settings.
+fn estimate_op<T: Api>(b: &mut Bytes<'_>) -> CarryError {
+    let names = [c"driver", c"7iron", c"pw", c"putter"];
+    let name = names[usize::from(b.byte()) % names.len()];
+    let mut i = core::mem::MaybeUninit::<CarryEstimateInput<T>>::uninit();
+    // SAFETY: a NUL-terminated name and a writable struct.
+    let code = unsafe { T::estimate_default(name.as_ptr(), i.as_mut_ptr()) };
+    if code != CarryError::CARRY_OK {
+        return code;
+    }
+    // SAFETY: written on CARRY_OK.
+    let mut i = unsafe { i.assume_init() };
+    mutate_club(b, &mut i.club);
+    let m = &mut i.measured_ball;
+    m.ball_speed_mps = f(b, -1.0, 160.0);
+    m.launch_angle_rad = f(b, -1.7, 1.7);
+    m.launch_direction_rad = f(b, -1.7, 1.7);
+    m.spin_radps = f(b, -10.0, 2100.0);
+    m.spin_axis_rad = f(b, -3.3, 3.3);
+    i.measured = selector(b, 32);
+    delivery_data(b, &mut i.measured_club, 1.0);
+    if b.flag() {
+        let n = &mut i.ball_noise;
+        n.ball_speed_mps = f(b, -0.1, 5.0);
+        n.launch_angle_rad = f(b, -0.01, 0.1);
+        n.spin_radps = f(b, -1.0, 100.0);
+        delivery_data(b, &mut i.club_noise, 0.1);
+        delivery_data(b, &mut i.prior_sd, 0.2);
+    }
+    if b.flag() {
+        delivery_data(b, &mut i.prior_mean, 1.0);
+    }
+    i.max_iterations = selector(b, 40);
+    i.tolerance = f(b, -0.1, 1.2);
+    i.posterior = selector(b, 2);
+    let mut o = CarryEstimateResult::<T>::default();
+    let ip = if b.byte() < 8 { null() } else { &i as *const _ };
+    let op = ptr_or_null(b, &mut o);
+    // SAFETY: NULL or live values.
+    let code = unsafe { T::estimate(ip, op) };
+    if code == CarryError::CARRY_OK {
+        let v = &o.value;
+        let sd = &o.sd;
+        let values = [
+            v.face_angle_rad,
+            v.club_path_rad,
+            v.dynamic_loft_rad,
+            v.attack_angle_rad,
+            v.impact_toe_m,
+            v.impact_height_m,
+            v.club_speed_mps,
+            v.smash_factor,
+        ];
+        let sds = [
+            sd.face_angle_rad,
+            sd.club_path_rad,
+            sd.dynamic_loft_rad,
+            sd.attack_angle_rad,
+            sd.impact_toe_m,
+            sd.impact_height_m,
+            sd.club_speed_mps,
+        ];
+        assert!(finite(&values), "non-finite estimate: {o:?}");
+        assert!(
+            sds.iter()
+                .all(|s| to_f64(*s) >= 0.0 && to_f64(*s).is_finite()),
+            "bad 1σ: {o:?}"
+        );
+    }
+    code
 }
 
 fn run<T: Api>(b: &mut Bytes<'_>) {
@@ -249,7 +368,10 @@ fn run<T: Api>(b: &mut Bytes<'_>) {
     };
     let mut count = usize::MAX;
     let np = ptr_or_null(b, &mut count);
-    let code = match b.byte() % 3 {
+    // 252..=255 (which chose the three others before the estimator was added) estimate
+    let op = b.byte();
+    let code = match if op >= 252 { 3 } else { op % 3 } {
+        3 => estimate_op::<T>(b),
         0 => {
             let mut i = CarryImpactInput::<T>::default();
             mutate_club(b, &mut i.club);

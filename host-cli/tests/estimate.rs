@@ -118,6 +118,10 @@ fn estimate_rejects_bad_input_with_status_2() {
             vec!["estimate", "--ball-speed", "60", "--club-path", "120"],
             "club",
         ),
+        (
+            vec!["estimate", "--ball-speed", "60", "--posterior", "mean"],
+            "--posterior",
+        ),
     ] {
         let (code, stdout, stderr) = run(&args);
         assert_eq!(code, 2, "{args:?}: {stderr}");
@@ -246,4 +250,46 @@ fn batch_estimate_reads_a_per_row_club() {
     assert!(!close(loft(&rows[0]), loft(&rows[1])));
     assert!(rows[2][col("error")].contains("putter9"), "{:?}", rows[2]);
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// `--posterior laplace`: the most probable delivery and the Gauss–Newton 1σ, not the
+/// default's posterior mean and profile 1σ (the strike height's differ); both reproduce
+/// the ball data.
+#[test]
+fn estimate_takes_the_posterior_summary() {
+    let base = [
+        "estimate",
+        "--club",
+        "driver",
+        "--ball-speed",
+        "66.5",
+        "--launch-angle",
+        "13.2",
+        "--launch-direction",
+        "1.1",
+        "--spin",
+        "2900",
+        "--spin-axis",
+        "-4",
+        "--club-speed",
+        "45.5",
+        "--json",
+    ];
+    let profile = json(&base);
+    let mut args = base.to_vec();
+    args.extend(["--posterior", "laplace"]);
+    let laplace = json(&args);
+    let default = json(&[&base[..], &["--posterior", "profile"]].concat());
+    assert_eq!(profile, default);
+    assert_ne!(
+        num(&laplace["impact_height_m_sd"]),
+        num(&profile["impact_height_m_sd"])
+    );
+    assert_ne!(
+        num(&laplace["impact_height_m"]),
+        num(&profile["impact_height_m"])
+    );
+    for r in [&profile, &laplace] {
+        assert!(num(&r["residual_ball_speed_mps"]).abs() < 0.5, "{r}");
+    }
 }

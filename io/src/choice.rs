@@ -2,7 +2,7 @@
 //! parsed without a command-line library: the Python package and the scene files read them
 //! by the names the CLI shows.
 
-use crate::compute::{IntegratorChoice, Precision, SolverChoice};
+use crate::compute::{IntegratorChoice, PosteriorChoice, Precision, SolverChoice};
 use crate::units::Units;
 
 /// An option value that is one of a few names.
@@ -41,6 +41,11 @@ impl Choice for SolverChoice {
         &[("reduced", Self::Reduced), ("full", Self::Full)];
 }
 
+impl Choice for PosteriorChoice {
+    const CHOICES: &'static [(&'static str, Self)] =
+        &[("profile", Self::Profile), ("laplace", Self::Laplace)];
+}
+
 impl Choice for IntegratorChoice {
     const CHOICES: &'static [(&'static str, Self)] = &[
         ("euler", Self::Euler),
@@ -73,5 +78,6 @@ mod tests {
         same::<Precision>();
         same::<SolverChoice>();
         same::<IntegratorChoice>();
+        same::<PosteriorChoice>();
     }
 }

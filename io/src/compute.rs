@@ -50,6 +50,30 @@ pub enum IntegratorChoice {
     Dp45,
 }
 
+/// How an estimate of club data from ball data summarises its posterior
+/// ([`carry_core::estimate::Posterior`]; docs/estimate.md §1, §6).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
+pub enum PosteriorChoice {
+    /// Posterior mean and calibrated 1σ (the strike height's profile posterior).
+    #[default]
+    Profile,
+    /// The most probable delivery and the Gauss–Newton 1σ: about half the cost, the 1σ of
+    /// attack, spin loft and strike height too narrow.
+    Laplace,
+}
+
+impl PosteriorChoice {
+    /// The core's summary.
+    #[must_use]
+    pub fn core(self) -> carry_core::estimate::Posterior {
+        match self {
+            Self::Profile => carry_core::estimate::Posterior::Profile,
+            Self::Laplace => carry_core::estimate::Posterior::Laplace,
+        }
+    }
+}
+
 /// Default fixed step for Euler and RK4 (s).
 pub const DEFAULT_FIXED_STEP_S: f64 = 1.0e-3;
 
@@ -66,6 +90,8 @@ pub struct Numerics {
     pub step_s: Option<f64>,
     /// DP45 tolerance (relative and absolute).
     pub tolerance: Option<f64>,
+    /// The estimator's posterior summary (club data from ball data).
+    pub posterior: PosteriorChoice,
 }
 
 /// What a run computes.

@@ -783,14 +783,19 @@ impl EstimateRecord {
 
 /// Estimates the club delivery of `p`'s club (preset and overrides) from `p`'s launch (the
 /// measured ball data) and the `club` data measured, with the preset's default settings
-/// ([`carry_core::estimate::Settings::typical`]), in `n`'s precision.
+/// ([`carry_core::estimate::Settings::typical`]), in `n`'s precision and with `n`'s
+/// posterior summary.
 ///
 /// # Errors
 /// Bad options, measurements out of range, or no estimate (input: exit 2).
 pub fn estimate(p: &Params, n: &Numerics, club: &MeasuredClub) -> Result<EstimateRecord, Failure> {
     use carry_core::estimate::{self as est, BallData, ClubData, Settings};
     use carry_core::real::lit;
-    fn run_in<T: Real>(p: &Params, club: &MeasuredClub) -> Result<EstimateRecord, Failure> {
+    fn run_in<T: Real>(
+        p: &Params,
+        n: &Numerics,
+        club: &MeasuredClub,
+    ) -> Result<EstimateRecord, Failure> {
         let head = compute::club::<T>(&p.club)?;
         let ball = compute::ball::<T>(p)?;
         let (motion, _) = compute::launch_motion::<T>(p)?;
@@ -802,7 +807,10 @@ pub fn estimate(p: &Params, n: &Numerics, club: &MeasuredClub) -> Result<Estimat
             face_angle_rad: rad(club.face_angle_deg),
             dynamic_loft_rad: rad(club.dynamic_loft_deg),
         };
-        let settings = Settings::<T>::typical(&p.club.preset.typical);
+        let settings = Settings::<T> {
+            posterior: n.posterior.core(),
+            ..Settings::typical(&p.club.preset.typical)
+        };
         let e = est::estimate(
             &head,
             &ball,
@@ -845,8 +853,8 @@ pub fn estimate(p: &Params, n: &Numerics, club: &MeasuredClub) -> Result<Estimat
         })
     }
     match n.precision {
-        Precision::F32 => run_in::<f32>(p, club),
-        Precision::F64 => run_in::<f64>(p, club),
+        Precision::F32 => run_in::<f32>(p, n, club),
+        Precision::F64 => run_in::<f64>(p, n, club),
     }
 }
 

@@ -217,7 +217,9 @@ def estimate(*, raise_on_error: bool = False, **kwargs: _Any) -> _Dict[str, _np.
     ``sidespin``), whatever the launch monitor measured of the club (``club_speed``,
     ``attack_angle``, ``club_path``, ``face_angle``, ``dynamic_loft``; each optional), the
     club (``club`` preset, ``contact``, ``loft``, ``cor``, …), ball (``ball_mass``,
-    ``ball_radius``), ``precision``, ``units``.
+    ``ball_radius``), ``precision``, ``units``, ``posterior`` (``"profile"``, the default:
+    posterior mean and calibrated 1σ; ``"laplace"``: the most probable delivery and the
+    Gauss–Newton 1σ, about half the cost).
     Returns the estimated delivery in TrackMan's convention, each datum with its 1σ
     (``face_angle_deg`` and ``face_angle_deg_sd``, ``club_path_deg``, ``face_to_path_deg``,
     ``dynamic_loft_deg``, ``attack_angle_deg``, ``spin_loft_deg``, ``impact_toe_m``,

@@ -98,6 +98,7 @@ def estimate(
     cor: _Num | None = ...,
     units: Literal["si", "imperial"] | None = ...,
     precision: Literal["f64", "f32"] | None = ...,
+    posterior: Literal["profile", "laplace"] | None = ...,
 ) -> Result:
     """Ball data (and any measured club data) → the club delivery with 1σ each
     (``carry estimate``); see ``carry.estimate``'s docstring."""

@@ -2,12 +2,14 @@
 //! numerics, units) and the keys of the per-row numeric columns.
 //!
 //! Names are the CLI's options in snake_case (carry-io's `params::Key` table), plus `units`,
-//! `scene`, `precision`, `solver`, `integrator`, `step` and `tolerance`. Options apply in the
+//! `scene`, `precision`, `solver`, `integrator`, `step`, `tolerance` and `posterior`. Options apply in the
 //! CLI's order: units, scene file, club, the other options, then each row's numbers.
 
 use carry_io::batch::applies;
 use carry_io::choice::Choice;
-use carry_io::compute::{IntegratorChoice, Mode, Numerics, Precision, SolverChoice};
+use carry_io::compute::{
+    IntegratorChoice, Mode, Numerics, PosteriorChoice, Precision, SolverChoice,
+};
 use carry_io::error::InputError;
 use carry_io::params::{Key, Kind, Params, Value, parse_finite};
 use carry_io::units::Units;
@@ -52,6 +54,7 @@ pub const SETTINGS: &[&str] = &[
     "integrator",
     "step",
     "tolerance",
+    "posterior",
 ];
 
 /// Whether setting `name` means something for `mode`.
@@ -59,6 +62,7 @@ fn setting_applies(mode: Mode, name: &str) -> bool {
     match name {
         "solver" => mode != Mode::Flight,
         "scene" | "integrator" | "step" | "tolerance" => mode != Mode::Impact,
+        "posterior" => false,
         _ => true,
     }
 }
@@ -147,7 +151,7 @@ impl Target {
     fn setting_applies(self, name: &str) -> bool {
         match self {
             Self::Run(mode) => setting_applies(mode, name),
-            Self::Estimate => matches!(name, "units" | "precision"),
+            Self::Estimate => matches!(name, "units" | "precision" | "posterior"),
         }
     }
 
@@ -285,6 +289,9 @@ pub fn request(
     }
     if let Some(t) = get("tolerance") {
         numerics.tolerance = Some(parse_finite(t).map_err(|r| ArgError::new("tolerance", r))?);
+    }
+    if let Some(t) = get("posterior") {
+        numerics.posterior = value_enum::<PosteriorChoice>("posterior", t)?;
     }
     numerics.check()?;
     // The club first: component overrides (cg_to_face_x, …) start from its preset.

@@ -74,3 +74,23 @@ def test_matches_the_cli(cli):
         got = float(e[name])
         want = float(value)
         assert got == pytest.approx(want, rel=1e-12, abs=1e-12), name
+
+
+def test_the_posterior_summary_is_a_setting(cli):
+    options = dict(club="driver", ball_speed=66.5, launch_angle=13.2, launch_direction=1.1,
+                   spin=2900, spin_axis=-4.0, club_speed=45.5)
+    profile = carry.estimate(raise_on_error=True, **options)
+    laplace = carry.estimate(raise_on_error=True, posterior="laplace", **options)
+    # the most probable delivery and the posterior mean differ along the height's valley,
+    # and so do the Gauss–Newton and the profile 1σ of the strike height
+    assert laplace["impact_height_m"] != profile["impact_height_m"]
+    assert laplace["impact_height_m_sd"] != profile["impact_height_m_sd"]
+    args = [cli, "estimate", "--json", "--posterior=laplace"] + [
+        f"--{k.replace('_', '-')}={v}" for k, v in options.items()]
+    doc = json.loads(subprocess.run(args, check=True, capture_output=True, text=True).stdout)
+    for name, value in doc.items():
+        assert float(laplace[name]) == pytest.approx(float(value), rel=1e-12, abs=1e-12), name
+    with pytest.raises(ValueError, match="^posterior: invalid value 'mean'"):
+        carry.estimate(posterior="mean", **options)
+    with pytest.raises(ValueError, match="^posterior: is not a setting of carry.flight"):
+        carry.flight(ball_speed=66.5, launch_angle=13.2, spin=2900, posterior="laplace")

@@ -3,7 +3,7 @@
 
 use super::output;
 use crate::cli::{ClubArgs, LaunchArgs, OutputArgs, PrecisionArgs};
-use carry_io::compute::Numerics;
+use carry_io::compute::{Numerics, PosteriorChoice};
 use carry_io::error::Failure;
 use carry_io::params::{Key, Params};
 use carry_io::units::{Quantity, Units};
@@ -47,6 +47,11 @@ pub struct EstimateCmd {
     pub club: ClubArgs,
     #[command(flatten)]
     pub precision: PrecisionArgs,
+    /// How the estimate summarises its posterior: `profile` (posterior mean, calibrated
+    /// 1σ) or `laplace` (most probable delivery, Gauss–Newton 1σ: about half the cost,
+    /// the 1σ of attack, spin loft and strike height too narrow). docs/estimate.md §1.
+    #[arg(long, value_enum, default_value = "profile")]
+    pub posterior: PosteriorChoice,
     #[command(flatten)]
     pub output: OutputArgs,
 }
@@ -63,6 +68,7 @@ impl EstimateCmd {
         self.launch.apply(&mut p, u);
         let n = Numerics {
             precision: self.precision.precision,
+            posterior: self.posterior,
             ..Numerics::default()
         };
         let m = &self.measured;
@@ -180,6 +186,7 @@ pub fn batch(args: &crate::cli::BatchArgs, cmd: &EstimateCmd) -> Result<(), Fail
     cmd.launch.apply(&mut base, u);
     let numerics = Numerics {
         precision: cmd.precision.precision,
+        posterior: cmd.posterior,
         ..Numerics::default()
     };
     let m = &cmd.measured;
