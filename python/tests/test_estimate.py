@@ -92,5 +92,5 @@ def test_the_posterior_summary_is_a_setting(cli):
         assert float(laplace[name]) == pytest.approx(float(value), rel=1e-12, abs=1e-12), name
     with pytest.raises(ValueError, match="^posterior: invalid value 'mean'"):
         carry.estimate(posterior="mean", **options)
-    with pytest.raises(ValueError, match="^posterior: is not a setting of carry.flight"):
+    with pytest.raises(ValueError, match="^posterior: is not an argument of carry.flight"):
         carry.flight(ball_speed=66.5, launch_angle=13.2, spin=2900, posterior="laplace")
