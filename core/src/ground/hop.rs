@@ -113,8 +113,7 @@ pub(crate) fn low_hop<T: Real, H: Hopper<T>>(
     stats: &mut Stats,
     recorder: Option<&mut Recorder<'_, T>>,
 ) -> Option<Contact<T>> {
-    // The spin axis is fixed in flight: its magnitude and direction once (each `norm` is a
-    // software square root on a Cortex-M4F).
+    // The spin axis is fixed in flight: its magnitude and direction once.
     let spin0 = length(&from.spin);
     let axis = if spin0 > T::zero() {
         from.spin / spin0

@@ -310,6 +310,7 @@ impl<'r, 'b, T: Real> Tracker<'r, 'b, T> {
     /// landing is in it (or was at its start): one comparison, in every step.
     #[inline(always)]
     pub(crate) fn ends_below(&self, step: &Step<'_, T>) -> bool {
+        // `height(y1) <= 0` without its subtraction on the flight's path (every step).
         match self.plane {
             None => step.y1[Y] <= self.landing_height,
             Some(_) => self.height(step.y1) <= T::zero(),

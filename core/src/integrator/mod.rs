@@ -150,17 +150,15 @@ impl<T: Real> Default for Integrator<T> {
     /// [`DEFAULT_TOLERANCE_F32`] in `f32` (within 1 cm), first trial step
     /// [`DEFAULT_INITIAL_STEP_F64_S`] or [`DEFAULT_INITIAL_STEP_F32_S`]. See docs/flight.md.
     fn default() -> Self {
-        let tolerance = lit(default_tolerance::<T>());
-        Self::DormandPrince {
-            rtol: tolerance,
-            atol: tolerance,
-            initial_step_s: lit(if is_single::<T>() {
+        let mut fidelity = Self::seed();
+        if let Self::DormandPrince { initial_step_s, .. } = &mut fidelity {
+            *initial_step_s = lit(if is_single::<T>() {
                 DEFAULT_INITIAL_STEP_F32_S
             } else {
                 DEFAULT_INITIAL_STEP_F64_S
-            }),
-            max_step_s: T::max_value().unwrap_or_else(T::one),
+            });
         }
+        fidelity
     }
 }
 
