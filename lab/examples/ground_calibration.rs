@@ -1,9 +1,9 @@
 //! The firm fairway's rolling resistance calibrated to TrackMan's 2010 driver chart, and
 //! the chart's rows at the preset (docs/ground.md):
-//! `cargo run --release -p carry-lab --example ground_calibration [--no-fit]`.
+//! `cargo run --release -p carry-lab --example ground_calibration [--no-fit | --crater-scan]`.
 use carry_core::ground::Surface;
 use carry_lab::ground_fit::{
-    RollRow, calibrate_fairway, chart_scene, mean_abs, parse_chart, roll_rows,
+    RollRow, calibrate_fairway, chart_scene, crater_scan, mean_abs, parse_chart, roll_rows,
 };
 
 fn print(rows: &[RollRow]) {
@@ -44,6 +44,17 @@ fn main() -> Result<(), String> {
     println!("preset fairway:");
     print(&roll_rows(&rows, &chart_scene(Surface::FairwayFirm))?);
     if std::env::args().any(|a| a == "--no-fit") {
+        return Ok(());
+    }
+    if std::env::args().any(|a| a == "--crater-scan") {
+        println!("\ncrater scale held, rho0 fitted: roll and total mean |err| (yd)");
+        let kappas = [0.0, 0.2, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0, 1.2];
+        for r in crater_scan(&rows, &chart_scene(Surface::FairwayFirm), &kappas)? {
+            println!(
+                "kappa {:.2}  rho0 {:.4}  roll {:.2}  total {:.2}",
+                r.crater_scale, r.rolling_resistance, r.roll_yd, r.total_yd
+            );
+        }
         return Ok(());
     }
     let fit = calibrate_fairway(&rows, &chart_scene(Surface::FairwayFirm))?;

@@ -2,20 +2,24 @@
 //! drives of 100–160 mph with launch angles and spins that land them at 5°–60°; then the
 //! run-out alone from a landing at each angle and speed with 2,500 rpm of backspin (a
 //! launch downwards from the turf is a landing there: the run-out starts at once).
-//! `cargo run --release -p carry-lab --example roll_by_landing`.
+//! `cargo run --release -p carry-lab --example roll_by_landing [RHO0 [KAPPA]]`: optionally
+//! the fairway's rolling resistance ρ₀ and crater scale κ instead of the preset's.
 use carry_core::ground::Surface;
 use carry_core::units::{deg, rpm};
 use carry_core::{Ball, Integrator, Launch};
 use carry_lab::ground_fit::{MPH_MPS, YARD_M, chart_scene};
 
 fn main() -> Result<(), String> {
-    // An optional rolling resistance ρ₀ for the fairway (else the preset's).
-    let surface = match std::env::args().nth(1).and_then(|a| a.parse::<f64>().ok()) {
+    // An optional rolling resistance ρ₀ and crater scale κ for the fairway (else the preset's).
+    let arg = |i: usize| std::env::args().nth(i).and_then(|a| a.parse::<f64>().ok());
+    let preset = Surface::<f64>::FairwayFirm
+        .turf()
+        .map_err(|e| e.to_string())?;
+    let surface = match arg(1) {
         Some(rho) => Surface::Custom(carry_core::Turf {
             rolling_resistance: rho,
-            ..Surface::<f64>::FairwayFirm
-                .turf()
-                .map_err(|e| e.to_string())?
+            crater_scale: arg(2).unwrap_or(preset.crater_scale),
+            ..preset
         }),
         None => Surface::FairwayFirm,
     };

@@ -177,65 +177,127 @@ pub struct FairwayFit {
     pub leave_one_out_yd: Vec<f64>,
 }
 
-/// The firm fairway's turf with rolling resistance `rho` (Penner's bounce as the preset).
-fn fairway_with(rho: f64) -> Result<Surface<f64>, String> {
+/// The firm fairway's turf with rolling resistance `rho` and crater scale `kappa`
+/// (Penner's restitution and friction as the preset).
+fn fairway_with(rho: f64, kappa: f64) -> Result<Surface<f64>, String> {
     let base = Surface::<f64>::FairwayFirm
         .turf()
         .map_err(|e| e.to_string())?;
     Ok(Surface::Custom(Turf {
         rolling_resistance: rho,
+        crater_scale: kappa,
         ..base
     }))
 }
 
-/// ρ₀ minimising the mean absolute roll error over `rows` (golden section on ln ρ₀ in
-/// 0.01–1).
-fn fit_rho(rows: &[ChartRow], base: &Scene<f64>) -> Result<f64, String> {
-    let cost = |ln_rho: f64| -> Result<f64, String> {
-        let scene = Scene {
-            ground: Some(Ground::level(fairway_with(ln_rho.exp())?)),
-            ..*base
-        };
-        Ok(mean_abs(
-            roll_rows(rows, &scene)?.iter().map(RollRow::roll_error_yd),
-        ))
-    };
-    let (mut a, mut b) = (0.01_f64.ln(), 1.0_f64.ln());
+/// The minimum of a unimodal `f` on `[a, b]` by golden-section search (40 steps).
+fn golden_section(
+    mut a: f64,
+    mut b: f64,
+    f: impl Fn(f64) -> Result<f64, String>,
+) -> Result<f64, String> {
     let r = 0.5 * (5.0_f64.sqrt() - 1.0);
     let (mut c, mut d) = (b - r * (b - a), a + r * (b - a));
-    let (mut fc, mut fd) = (cost(c)?, cost(d)?);
+    let (mut fc, mut fd) = (f(c)?, f(d)?);
     for _ in 0..40 {
         if fc < fd {
             b = d;
             d = c;
             fd = fc;
             c = b - r * (b - a);
-            fc = cost(c)?;
+            fc = f(c)?;
         } else {
             a = c;
             c = d;
             fc = fd;
             d = a + r * (b - a);
-            fd = cost(d)?;
+            fd = f(d)?;
         }
     }
-    Ok((0.5 * (a + b)).exp())
+    Ok(0.5 * (a + b))
+}
+
+/// `base` on the firm fairway with `rho` and `kappa`.
+fn on_fairway(base: &Scene<f64>, rho: f64, kappa: f64) -> Result<Scene<f64>, String> {
+    Ok(Scene {
+        ground: Some(Ground::level(fairway_with(rho, kappa)?)),
+        ..*base
+    })
+}
+
+/// Mean absolute roll error over `rows` at `rho` and `kappa`.
+fn roll_cost(rows: &[ChartRow], base: &Scene<f64>, rho: f64, kappa: f64) -> Result<f64, String> {
+    Ok(mean_abs(
+        roll_rows(rows, &on_fairway(base, rho, kappa)?)?
+            .iter()
+            .map(RollRow::roll_error_yd),
+    ))
+}
+
+/// ρ₀ minimising the mean absolute roll error over `rows` at crater scale `kappa`
+/// (golden section on ln ρ₀ in 0.01–1).
+fn fit_rho(rows: &[ChartRow], base: &Scene<f64>, kappa: f64) -> Result<f64, String> {
+    let ln_rho = golden_section(0.01_f64.ln(), 1.0_f64.ln(), |l| {
+        roll_cost(rows, base, l.exp(), kappa)
+    })?;
+    Ok(ln_rho.exp())
+}
+
+/// The firm fairway preset's crater scale κ (Penner's green: 1).
+fn preset_crater_scale() -> Result<f64, String> {
+    Ok(Surface::<f64>::FairwayFirm
+        .turf()
+        .map_err(|e| e.to_string())?
+        .crater_scale)
+}
+
+/// The chart's fit at one crater scale.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CraterScanRow {
+    /// The crater scale κ, held.
+    pub crater_scale: f64,
+    /// ρ₀ fitted at that κ.
+    pub rolling_resistance: f64,
+    /// Roll and total mean |err| over the chart (yd).
+    pub roll_yd: f64,
+    /// Total mean |err| (yd).
+    pub total_yd: f64,
+}
+
+/// The chart's roll fit with the crater scale held at each of `kappas` in turn (ρ₀ fitted
+/// each time): what the chart alone says of the crater (docs/ground.md).
+///
+/// # Errors
+/// A row that does not fly.
+pub fn crater_scan(
+    rows: &[ChartRow],
+    scene: &Scene<f64>,
+    kappas: &[f64],
+) -> Result<Vec<CraterScanRow>, String> {
+    kappas
+        .iter()
+        .map(|&kappa| {
+            let rho = fit_rho(rows, scene, kappa)?;
+            let at = roll_rows(rows, &on_fairway(scene, rho, kappa)?)?;
+            Ok(CraterScanRow {
+                crater_scale: kappa,
+                rolling_resistance: rho,
+                roll_yd: mean_abs(at.iter().map(RollRow::roll_error_yd)),
+                total_yd: mean_abs(at.iter().map(RollRow::total_error_yd)),
+            })
+        })
+        .collect()
 }
 
 /// Calibrates the firm fairway's ρ₀ to the chart `rows` in `scene`'s air and aerodynamics
-/// (its ground is replaced), with leave-one-out errors.
+/// (its ground is replaced; the crater scale is the preset's), with leave-one-out errors.
 ///
 /// # Errors
 /// A row that does not fly.
 pub fn calibrate_fairway(rows: &[ChartRow], scene: &Scene<f64>) -> Result<FairwayFit, String> {
-    let rho = fit_rho(rows, scene)?;
-    let at = |rho: f64| -> Result<Scene<f64>, String> {
-        Ok(Scene {
-            ground: Some(Ground::level(fairway_with(rho)?)),
-            ..*scene
-        })
-    };
-    let fitted = roll_rows(rows, &at(rho)?)?;
+    let kappa = preset_crater_scale()?;
+    let rho = fit_rho(rows, scene, kappa)?;
+    let fitted = roll_rows(rows, &on_fairway(scene, rho, kappa)?)?;
     let mut loo = Vec::with_capacity(rows.len());
     for i in 0..rows.len() {
         let others: Vec<ChartRow> = rows
@@ -244,8 +306,8 @@ pub fn calibrate_fairway(rows: &[ChartRow], scene: &Scene<f64>) -> Result<Fairwa
             .filter(|(j, _)| *j != i)
             .map(|(_, r)| r.clone())
             .collect();
-        let rho_i = fit_rho(&others, scene)?;
-        let row = roll_rows(&rows[i..=i], &at(rho_i)?)?;
+        let rho_i = fit_rho(&others, scene, kappa)?;
+        let row = roll_rows(&rows[i..=i], &on_fairway(scene, rho_i, kappa)?)?;
         loo.push(row.first().map_or(f64::NAN, RollRow::roll_error_yd));
     }
     Ok(FairwayFit {

@@ -6,7 +6,7 @@
 use carry_core::ground::Surface;
 use carry_core::ground::surface::FAIRWAY_ROLLING_RESISTANCE;
 use carry_lab::ground_fit::{
-    RollRow, calibrate_fairway, chart_scene, mean_abs, parse_chart, roll_rows,
+    RollRow, calibrate_fairway, chart_scene, crater_scan, mean_abs, parse_chart, roll_rows,
 };
 
 const CHART: &str = include_str!("../../tests/data/trackman_driver_optimizer_2010.csv");
@@ -40,6 +40,30 @@ fn the_fairway_preset_is_the_charts_calibration() {
             "{}: {:.1} yd",
             r.label,
             r.roll_yd.1
+        );
+    }
+}
+
+#[test]
+fn the_crater_scan_refits_rho_at_each_scale() {
+    let rows = parse_chart(CHART).unwrap_or_else(|e| panic!("{e}"));
+    let scene = chart_scene(Surface::FairwayFirm);
+    let scan = crater_scan(&rows, &scene, &[0.8, 1.0]).unwrap_or_else(|e| panic!("{e}"));
+    let (shallow, penner) = (scan[0], scan[1]);
+    // At the preset's crater the scan is the calibration's fit.
+    assert!(
+        (penner.rolling_resistance / FAIRWAY_ROLLING_RESISTANCE - 1.0).abs() < 0.03,
+        "{penner:?}"
+    );
+    // A shallower crater stops the ball less at the bounce: the grass must stop it more.
+    assert!(
+        shallow.rolling_resistance > 1.2 * penner.rolling_resistance,
+        "{shallow:?} {penner:?}"
+    );
+    for r in &scan {
+        assert!(
+            r.roll_yd.is_finite() && r.roll_yd < 6.0 && r.total_yd < 8.0,
+            "{r:?}"
         );
     }
 }
