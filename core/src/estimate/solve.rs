@@ -413,12 +413,16 @@ fn jacobian<T: Real>(
 
 /// The profile posterior along the strike height: the first probe on either side (in
 /// Laplace σ of the height; a side found wider than this is probed again at twice its
-/// width), the farthest probe (also the floor of a width, `t/FAR`), and the Gauss–Newton
+/// width), the farthest probe (also the floor of a width, `t/FAR`), the Gauss–Newton
 /// relaxations per probe (one relaxation, or Broyden/chord Jacobians instead of fresh
-/// ones, lost the calibration: docs/estimate.md §4).
+/// ones, lost the calibration: docs/estimate.md §4), and the ramp over which the second
+/// probe's width is blended in, as a fraction of the first probe: from `PROBE` to
+/// `PROBE·(1 + BLEND)` (a switch at `PROBE` made f32 and f64 differ by up to 1.3σ;
+/// docs/estimate.md §5).
 const PROBE: f64 = 1.5;
 const FAR: f64 = 10.0;
 const RELAX: usize = 2;
+const BLEND: f64 = 0.2;
 /// Index of the strike height in the unknowns.
 const HEIGHT: usize = 5;
 
@@ -496,24 +500,30 @@ fn valley<T: Real>(
     let c0 = problem.cost(r, x);
     let probe = lit::<T>(PROBE);
     let far = lit::<T>(FAR);
+    // one side probed at `t` (signed) from `x` along `start`: its width and direction
+    let side = |start: V7<T>, t: T| -> Option<(T, V7<T>)> {
+        let (xp, cp) = relax(problem, x + start * t)?;
+        let dc = crate::real::larger(cp - c0, t * t / (far * far));
+        Some((t.abs() / dc.root(), (xp - x) / t))
+    };
     // per side: the profile's Gaussian width σ± (in Laplace σ) and the valley's direction
     // d± (the delivery per unit t)
     let mut sides = [(T::one(), s), (T::one(), s)];
     for ((width, dir), sign) in sides.iter_mut().zip([T::one(), -T::one()]) {
-        let mut t = probe;
-        let mut start = s;
-        for round in 0..2 {
-            let Some((xp, cp)) = relax(problem, x + start * (sign * t)) else {
-                break;
-            };
-            let dc = crate::real::larger(cp - c0, t * t / (far * far));
-            *width = t / dc.root();
-            *dir = (xp - x) / (sign * t);
-            if !(round == 0 && *width > probe) {
-                break;
+        let Some((near, d_near)) = side(s, sign * probe) else {
+            continue;
+        };
+        (*width, *dir) = (near, d_near);
+        if near > probe {
+            // a side wider than the probe is probed again at twice its width, farther along
+            // the valley, and that estimate blended in as the first width grows from
+            // `PROBE` to `PROBE·(1 + BLEND)`: the summary stays continuous in the data
+            let t = crate::real::smaller(near + near, far);
+            if let Some((wide, d_wide)) = side(d_near, sign * t) {
+                let blend = crate::real::smaller((near - probe) / (probe * lit(BLEND)), T::one());
+                *width = near + (wide - near) * blend;
+                *dir = d_near + (d_wide - d_near) * blend;
             }
-            t = crate::real::smaller(*width + *width, far);
-            start = *dir;
         }
     }
     let [(up, du), (down, dd)] = sides;
