@@ -5,7 +5,7 @@
 //! impact speed `v`, angle from the normal `φ`):
 //!
 //! ```text
-//! crater tilt        θ_c = κ · 15.4° · (v / 18.6 m/s) · (φ / 44.4°) · min(1, v_n / 8 m/s),
+//! crater tilt        θ_c = κ · 15.4° · (v / 18.6 m/s) · (φ / 44.4°) · min(1, v_n / 6 m/s),
 //!                    clamped to [0, φ]
 //! tilted components  u = v_t cos θ_c − v_n sin θ_c,   v_n' = v_t sin θ_c + v_n cos θ_c
 //! restitution        e = (e₀/0.510) · (0.510 − 0.0375 v_n' + 0.000903 v_n'²)  (v_n' ≤ 20 m/s)
@@ -19,7 +19,7 @@
 //!
 //! The last factor of θ_c is ours: Penner fitted the crater law to landings (Haake's
 //! measurements near 18.6 m/s, 44.4°) and it is unchanged for landings at a normal speed
-//! of 8 m/s or more (a driver's, a wedge's). Extrapolated to the grazing impacts of a ball
+//! of 6 m/s or more (a driver's, a wedge's). Extrapolated to the grazing impacts of a ball
 //! already running out it would predict a crater for a rolling ball, which then skips
 //! along in hops for tens of metres; a grazing ball barely dents the turf, so the tilt
 //! fades with the normal speed below [`CRATER_FADE_NORMAL_SPEED_MPS`] (calibrated on
@@ -44,11 +44,11 @@ const CRATER_REFERENCE_SPEED_MPS: f64 = 18.6;
 /// Reference impact angle from the normal of the crater law (rad): 44.4°.
 const CRATER_REFERENCE_ANGLE_RAD: f64 = 44.4 * core::f64::consts::PI / 180.0;
 /// Normal speed below which the crater tilt fades out linearly (m/s). Issue 12 took
-/// Penner's reference impact's, 18.6 m/s · cos 44.4° = 13.29 m/s; 8 m/s matches
-/// TrackMan's roll after shallow landings (a 14° landing at 27 m/s rolls 40 yd, and the
-/// issue-21 band figures; the sweep is in docs/ground.md). Landings steeper than about
-/// 25° have a normal speed above it and are unaffected.
-pub const CRATER_FADE_NORMAL_SPEED_MPS: f64 = 8.0;
+/// Penner's reference impact's, 18.6 m/s · cos 44.4° = 13.29 m/s; 6 m/s matches
+/// TrackMan's roll after shallow landings (a 15° landing at 27 m/s rolls 40 yd; the
+/// issue-21 band figures and topped drives; the sweep is in docs/ground.md). Landings
+/// steeper than about 15° have a normal speed above it and are unaffected.
+pub const CRATER_FADE_NORMAL_SPEED_MPS: f64 = 6.0;
 /// Normal speed above which Penner's restitution is constant (m/s).
 const RESTITUTION_KNEE_MPS: f64 = 20.0;
 
@@ -134,7 +134,7 @@ pub(crate) fn rebound<T: Real>(
     let b = t.cross(n);
     let w = spin.dot(&b);
     let phi = crate::geometry::atan2_first_quadrant(vt, vn);
-    // θ_c = κ·15.4°·(v/18.6)·(φ/44.4°)·min(1, v_n/13.29): everything but φ first.
+    // θ_c = κ·15.4°·(v/18.6)·(φ/44.4°)·min(1, v_n/v_f): everything but φ first.
     let per_speed_angle =
         lit::<T>(CRATER_REFERENCE_RAD / (CRATER_REFERENCE_SPEED_MPS * CRATER_REFERENCE_ANGLE_RAD));
     // Faded out below the reference normal speed (see the module docs).
