@@ -5,8 +5,10 @@
 //! bodies rigid otherwise, explicit time steps of 10 ns, flat face, face frame (x out of the
 //! face, y up it, z toward the toe). It answers one question: does the contact itself pass the
 //! vertical gear effect (along the slip the lofted face already gives the ball) differently
-//! from the horizontal one (across it)? Prints the spin per mm of strike height, the sidespin
-//! per mm toward the toe and their ratio, to compare with the inertia ratio Iyy/Izz.
+//! from the horizontal one (across it)? And does the face's turn during the contact matter
+//! (the face held as at first touch, or turning with the head)? Prints the spin per mm of
+//! strike height, the sidespin per mm toward the toe and their ratio, to compare with the
+//! inertia ratio Iyy/Izz, and the launch and start-line responses.
 //!
 //! `cargo test -p carry-tests --test impact_time_resolved -- --ignored --nocapture`
 
@@ -23,21 +25,25 @@ const CG_DEPTH_M: f64 = 0.04;
 
 struct Out {
     spin: Vector3<f64>,
+    velocity: Vector3<f64>,
     slip_s: f64,
 }
 
 /// One strike `h` up and `z` toward the toe; `r` the tangential/normal frequency ratio, `mu`
-/// the friction coefficient.
-fn strike(h: f64, z: f64, r: f64, mu: f64) -> Out {
+/// the friction coefficient; `turning`: the face turns with the head during the contact
+/// (its normal and the contact point's lever rotate by the head's small rotation angle),
+/// else both stay as at first touch.
+fn strike(h: f64, z: f64, r: f64, mu: f64, turning: bool) -> Out {
     let (tau, e, dt): (f64, f64, f64) = (0.45e-3, 0.8, 1e-8);
     let ib = 0.4 * BALL_KG * BALL_M * BALL_M;
-    let n = Vector3::x();
+    let n0 = Vector3::x();
     let loft = LOFT_DEG.to_radians();
     let (mut vb, mut wb) = (Vector3::zeros(), Vector3::<f64>::zeros());
     let mut vc = Vector3::new(CLUB_MPS * loft.cos(), -CLUB_MPS * loft.sin(), 0.0);
     let mut wc = Vector3::<f64>::zeros();
-    let rc = Vector3::new(CG_DEPTH_M, h, z);
-    let rb = -n * BALL_M;
+    let rc0 = Vector3::new(CG_DEPTH_M, h, z);
+    // the head's rotation since first touch (small angles)
+    let mut turn = Vector3::<f64>::zeros();
     let mn = 1.0 / (1.0 / BALL_KG + 1.0 / HEAD_KG);
     let kn = mn * (std::f64::consts::PI / tau).powi(2);
     let zeta = -e.ln() / (std::f64::consts::PI.powi(2) + e.ln().powi(2)).sqrt();
@@ -47,10 +53,18 @@ fn strike(h: f64, z: f64, r: f64, mu: f64) -> Out {
     let (mut dn, mut xi, mut t, mut slip_s, mut started) =
         (0.0, Vector3::<f64>::zeros(), 0.0, 0.0, false);
     while t < 5.0 * tau {
+        let (n, rc) = if turning {
+            ((n0 + turn.cross(&n0)).normalize(), rc0 + turn.cross(&rc0))
+        } else {
+            (n0, rc0)
+        };
+        let rb = -n * BALL_M;
         let u = (vb + wb.cross(&rb)) - (vc + wc.cross(&rc));
-        let dnd = -u.x;
+        let dnd = -u.dot(&n);
         dn += dnd * dt;
-        xi += Vector3::new(0.0, u.y, u.z) * dt;
+        xi += (u - n * u.dot(&n)) * dt;
+        // the tangential spring stays in the (turning) contact plane
+        xi -= n * xi.dot(&n);
         if dn <= 0.0 && started {
             break;
         }
@@ -77,9 +91,14 @@ fn strike(h: f64, z: f64, r: f64, mu: f64) -> Out {
             tq.y / HEAD_KGM2[1],
             tq.z / HEAD_KGM2[2],
         ) * dt;
+        turn += wc * dt;
         t += dt;
     }
-    Out { spin: wb, slip_s }
+    Out {
+        spin: wb,
+        velocity: vb,
+        slip_s,
+    }
 }
 
 #[test]
@@ -87,9 +106,9 @@ fn strike(h: f64, z: f64, r: f64, mu: f64) -> Out {
 fn vertical_and_horizontal_gear_effect_through_the_contact() {
     let rpm = 60.0 / std::f64::consts::TAU;
     println!(
-        "| r | μ | centre spin rpm | slip ms | vertical rpm/mm (%/mm) | sidespin rpm/mm | vertical/horizontal |"
+        "| r | μ | face | centre spin rpm | slip ms | vertical rpm/mm (%/mm) | sidespin rpm/mm | vertical/horizontal | launch °/mm up | start °/mm toe |"
     );
-    println!("|---|---|---|---|---|---|---|");
+    println!("|---|---|---|---|---|---|---|---|---|---|");
     for (r, mu) in [
         (0.506, 0.4),
         (0.506, 0.2),
@@ -97,19 +116,32 @@ fn vertical_and_horizontal_gear_effect_through_the_contact() {
         (1.4, 0.4),
         (1.4, 0.15),
     ] {
-        let c = strike(0.0, 0.0, r, mu);
-        let (up, down) = (strike(0.01, 0.0, r, mu), strike(-0.01, 0.0, r, mu));
-        let (toe, heel) = (strike(0.0, 0.01, r, mu), strike(0.0, -0.01, r, mu));
-        let centre = c.spin.norm() * rpm;
-        let vertical = (up.spin.norm() - down.spin.norm()) * rpm / 20.0;
-        let side = (toe.spin.y - heel.spin.y) * rpm / 20.0;
-        let ratio = (vertical / side).abs();
-        println!(
-            "| {r} | {mu} | {centre:.0} | {:.3} | {vertical:+.1} ({:+.2}) | {side:+.1} | {ratio:.2} |",
-            c.slip_s * 1e3,
-            vertical / centre * 100.0
-        );
-        assert!(centre.is_finite() && ratio.is_finite());
+        for turning in [false, true] {
+            let c = strike(0.0, 0.0, r, mu, turning);
+            let (up, down) = (
+                strike(0.01, 0.0, r, mu, turning),
+                strike(-0.01, 0.0, r, mu, turning),
+            );
+            let (toe, heel) = (
+                strike(0.0, 0.01, r, mu, turning),
+                strike(0.0, -0.01, r, mu, turning),
+            );
+            let centre = c.spin.norm() * rpm;
+            let vertical = (up.spin.norm() - down.spin.norm()) * rpm / 20.0;
+            let side = (toe.spin.y - heel.spin.y) * rpm / 20.0;
+            let ratio = (vertical / side).abs();
+            let elevation = |o: &Out| o.velocity.y.atan2(o.velocity.x).to_degrees();
+            let azimuth = |o: &Out| o.velocity.z.atan2(o.velocity.x).to_degrees();
+            println!(
+                "| {r} | {mu} | {} | {centre:.0} | {:.3} | {vertical:+.1} ({:+.2}) | {side:+.1} | {ratio:.2} | {:+.3} | {:+.3} |",
+                if turning { "turns" } else { "held" },
+                c.slip_s * 1e3,
+                vertical / centre * 100.0,
+                (elevation(&up) - elevation(&down)) / 20.0,
+                (azimuth(&toe) - azimuth(&heel)) / 20.0,
+            );
+            assert!(centre.is_finite() && ratio.is_finite());
+        }
     }
     println!("Iyy/Izz = {:.2}", HEAD_KGM2[1] / HEAD_KGM2[2]);
 }
