@@ -4,6 +4,7 @@
 //! its event search. The run-out ([`super::run_out`]) takes them through [`Hopper`].
 
 use super::aimed;
+use super::normal::Normal;
 use crate::aero::{Dynamics, ForceEvaluation, ForceField, S, State};
 use crate::error::{Error, Result};
 use crate::integrator::{Method, events, integrate_to_event};
@@ -105,9 +106,9 @@ impl HopForces {
 ///   the acceleration is quadratic in time through the three.
 ///
 /// `None` when the force does not pull the ball back to the plane.
-pub(crate) fn low_hop<T: Real, H: Hopper<T>>(
+pub(crate) fn low_hop<T: Real, H: Hopper<T>, N: Normal<T>>(
     from: &Contact<T>,
-    n: &Vector3<T>,
+    n: N,
     hopper: &H,
     form: HopForces,
     stats: &mut Stats,
@@ -122,10 +123,10 @@ pub(crate) fn low_hop<T: Real, H: Hopper<T>>(
     };
     let f0 = hopper.forces(&from.position, &from.velocity, spin0, &axis, stats);
     let (a0, s0) = (f0.acceleration, f0.spin_rate);
-    let vn = from.velocity.dot(n);
+    let vn = n.dot(&from.velocity);
     let two = lit::<T>(2.0);
     // First guess: the parabola of the initial force.
-    let an = a0.dot(n);
+    let an = n.dot(&a0);
     if !(an < T::zero()) {
         return None;
     }
@@ -160,7 +161,7 @@ pub(crate) fn low_hop<T: Real, H: Hopper<T>>(
     };
     let (j, spin_jerk, q, tau) = if form == HopForces::Held {
         let (j, spin_jerk) = hopper.rates_held(&f0, &axis);
-        (j, spin_jerk, None, hop_landing(vn, an, j.dot(n))?)
+        (j, spin_jerk, None, hop_landing(vn, an, n.dot(&j))?)
     } else {
         // τ₁ and 1/τ₁ side by side (two divisions, neither waiting on the other).
         let t1 = -two * vn / an;
@@ -171,7 +172,7 @@ pub(crate) fn low_hop<T: Real, H: Hopper<T>>(
         let a1 = f1.acceleration;
         let (j, spin_jerk) = ((a1 - a0) * per_t1, (f1.spin_rate - s0) * per_t1);
         // jn = j·n from the normal accelerations (one dot product after a₁, not two steps).
-        let tau = hop_landing(vn, an, (a1.dot(n) - an) * per_t1)?;
+        let tau = hop_landing(vn, an, (n.dot(&a1) - an) * per_t1)?;
         // Through the three, `j = (4a_m − 3a₀ − a₁)/τ₁`, `q = 2(a₀ + a₁ − 2a_m)/τ₁²`; the
         // landing by Newton's method from the two-end root on
         // `vn + a_nτ/2 + j_nτ²/6 + q_nτ³/12 = 0`.
@@ -182,7 +183,7 @@ pub(crate) fn low_hop<T: Real, H: Hopper<T>>(
             .acceleration;
         let j = (am * lit::<T>(4.0) - a0 * lit::<T>(3.0) - a1) * per_t1;
         let q = (a0 + a1 - am * two) * (two * per_t1 * per_t1);
-        let (jn, qn) = (j.dot(n), q.dot(n));
+        let (jn, qn) = (n.dot(&j), n.dot(&q));
         let mut tau = tau;
         for _ in 0..3 {
             let g = vn + tau * (an * half + tau * (jn * sixth + tau * qn * lit(1.0 / 12.0)));
@@ -581,7 +582,7 @@ mod tests {
                 let from = leaving(v, w);
                 let mut stats = Stats::default();
                 let form = HopForces::for_wind(hops.wind_varies());
-                let Some(closed) = low_hop(&from, &n, &hops, form, &mut stats, None) else {
+                let Some(closed) = low_hop(&from, n, &hops, form, &mut stats, None) else {
                     panic!("closed form {v:?}")
                 };
                 assert_eq!(stats.force_evaluations, evaluations);
