@@ -104,8 +104,9 @@ pub(crate) struct ForceEvaluation<T: Real> {
     /// Air speed `V` (m/s) and its square.
     speed: T,
     speed_sq: T,
-    /// Spin magnitude `s` (rad/s).
+    /// Spin magnitude `s` (rad/s), and its square when the evaluation was given it.
     spin: T,
+    spin_sq: Option<T>,
     /// Drag and lift factors `k_d`, `k_l` (1/s; 0 when off).
     drag: T,
     lift: T,
@@ -130,6 +131,7 @@ impl<T: Real> Dynamics<'_, T> {
     fn forces_switched(
         &self,
         y: &State<T>,
+        spin_sq: Option<T>,
         drag: bool,
         lift: bool,
         decay: bool,
@@ -146,6 +148,7 @@ impl<T: Real> Dynamics<'_, T> {
             speed: zero,
             speed_sq: zero,
             spin: s,
+            spin_sq,
             drag: zero,
             lift: zero,
             decay: zero,
@@ -156,7 +159,10 @@ impl<T: Real> Dynamics<'_, T> {
             let speed = speed_sq.root();
             (f.relative_velocity, f.speed, f.speed_sq) = (vr, speed, speed_sq);
             if drag || lift {
-                let (kd, kl) = p.aero.forces.factors(speed, speed_sq, s, drag, lift);
+                let (kd, kl) = p
+                    .aero
+                    .forces
+                    .factors(speed, speed_sq, s, spin_sq, drag, lift);
                 if drag {
                     f.acceleration -= vr * kd;
                     f.drag = kd;
@@ -184,7 +190,7 @@ impl<T: Real> Dynamics<'_, T> {
         decay: bool,
         wind: bool,
     ) -> State<T> {
-        self.forces_switched(y, drag, lift, decay, wind)
+        self.forces_switched(y, None, drag, lift, decay, wind)
             .derivative(y)
     }
 
@@ -194,7 +200,17 @@ impl<T: Real> Dynamics<'_, T> {
     #[cfg_attr(not(target_os = "none"), inline(always))]
     pub(crate) fn forces(&self, y: &State<T>) -> ForceEvaluation<T> {
         let e = &self.field.effects;
-        self.forces_switched(y, e.drag, e.lift, e.spin_decay, self.field.has_wind())
+        self.forces_switched(y, None, e.drag, e.lift, e.spin_decay, self.field.has_wind())
+    }
+
+    /// [`Dynamics::forces`] given also the square of the spin `y[S]`, `spin_sq` (a hop's,
+    /// from its spin vector): the spin laws take `(S/S_c)²` from it, not waiting on the
+    /// square root that gives `y[S]` (the same force to rounding).
+    #[cfg_attr(not(target_os = "none"), inline(always))]
+    pub(crate) fn forces_given_spin_sq(&self, y: &State<T>, spin_sq: T) -> ForceEvaluation<T> {
+        let e = &self.field.effects;
+        let wind = self.field.has_wind();
+        self.forces_switched(y, Some(spin_sq), e.drag, e.lift, e.spin_decay, wind)
     }
 
     /// The rates of change of the acceleration and of the spin rate over a short hop
@@ -238,6 +254,7 @@ impl<T: Real> Dynamics<'_, T> {
                 f.speed,
                 f.speed_sq,
                 f.spin,
+                f.spin_sq,
                 relative_speed_rate,
                 f.spin_rate,
                 e.drag,

@@ -45,13 +45,15 @@ pub(crate) trait Hopper<T: Real> {
 
     /// The acceleration (m/s², G, gravity included), the rate of change of the spin
     /// magnitude (rad/s²) and the coefficients behind them, of a ball at `position` with
-    /// `velocity`, spinning at `spin` (rad/s) about the unit `axis` (zero without spin):
-    /// one force evaluation.
+    /// `velocity`, spinning at `spin` (rad/s; its square `spin_sq` if known apart from it,
+    /// see `aero::Dynamics::forces_given_spin_sq`) about the unit `axis` (zero without
+    /// spin): one force evaluation.
     fn forces(
         &self,
         position: &Vector3<T>,
         velocity: &Vector3<T>,
         spin: T,
+        spin_sq: Option<T>,
         axis: &Vector3<T>,
         stats: &mut Stats,
     ) -> ForceEvaluation<T>;
@@ -114,14 +116,23 @@ pub(crate) fn low_hop<T: Real, H: Hopper<T>, N: Normal<T>>(
     stats: &mut Stats,
     recorder: Option<&mut Recorder<'_, T>>,
 ) -> Option<Contact<T>> {
-    // The spin axis is fixed in flight: its magnitude and direction once.
-    let spin0 = length(&from.spin);
+    // The spin axis is fixed in flight: its magnitude and direction once (the force's spin
+    // laws from the square, beside the square root).
+    let spin0_sq = from.spin.norm_squared();
+    let spin0 = spin0_sq.root();
     let axis = if spin0 > T::zero() {
         from.spin / spin0
     } else {
         Vector3::zeros()
     };
-    let f0 = hopper.forces(&from.position, &from.velocity, spin0, &axis, stats);
+    let f0 = hopper.forces(
+        &from.position,
+        &from.velocity,
+        spin0,
+        Some(spin0_sq),
+        &axis,
+        stats,
+    );
     let (a0, s0) = (f0.acceleration, f0.spin_rate);
     let vn = n.dot(&from.velocity);
     let two = lit::<T>(2.0);
@@ -168,7 +179,7 @@ pub(crate) fn low_hop<T: Real, H: Hopper<T>, N: Normal<T>>(
         let per_t1 = -an / (two * vn);
         let zero = Vector3::zeros();
         let (p1, v1) = state(t1, &zero);
-        let f1 = hopper.forces(&p1, &v1, spin_at(t1, s0, T::zero()), &axis, stats);
+        let f1 = hopper.forces(&p1, &v1, spin_at(t1, s0, T::zero()), None, &axis, stats);
         let a1 = f1.acceleration;
         let (j, spin_jerk) = ((a1 - a0) * per_t1, (f1.spin_rate - s0) * per_t1);
         // jn = j·n from the normal accelerations (one dot product after a₁, not two steps).
@@ -179,7 +190,7 @@ pub(crate) fn low_hop<T: Real, H: Hopper<T>, N: Normal<T>>(
         let tm = t1 * half;
         let (pm, vm) = state(tm, &j);
         let am = hopper
-            .forces(&pm, &vm, spin_at(tm, s0, spin_jerk), &axis, stats)
+            .forces(&pm, &vm, spin_at(tm, s0, spin_jerk), None, &axis, stats)
             .acceleration;
         let j = (am * lit::<T>(4.0) - a0 * lit::<T>(3.0) - a1) * per_t1;
         let q = (a0 + a1 - am * two) * (two * per_t1 * per_t1);
@@ -266,15 +277,20 @@ impl<T: Real> Hopper<T> for Hops<'_, T> {
         p: &Vector3<T>,
         v: &Vector3<T>,
         spin: T,
+        spin_sq: Option<T>,
         axis: &Vector3<T>,
         stats: &mut Stats,
     ) -> ForceEvaluation<T> {
         stats.force_evaluations = stats.force_evaluations.saturating_add(1);
-        Dynamics {
+        let dynamics = Dynamics {
             field: self.field,
             axis: *axis,
+        };
+        let y = [p.x, p.y, p.z, v.x, v.y, v.z, spin];
+        match spin_sq {
+            Some(q) => dynamics.forces_given_spin_sq(&y, q),
+            None => dynamics.forces(&y),
         }
-        .forces(&[p.x, p.y, p.z, v.x, v.y, v.z, spin])
     }
 
     fn rates_held(&self, forces: &ForceEvaluation<T>, axis: &Vector3<T>) -> (Vector3<T>, T) {
