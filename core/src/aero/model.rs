@@ -304,6 +304,7 @@ impl<T: Real> Forces<T> {
     /// family's spin term is left out: it is zero past the lift's saturation, and below it
     /// the spin decays by about 1–2 % a second at run-out speeds.
     #[allow(clippy::too_many_arguments)]
+    #[cfg_attr(not(target_os = "none"), inline(always))]
     pub(crate) fn factor_rates(
         &self,
         speed: T,

@@ -151,7 +151,8 @@ pub(crate) fn rebound<T: Real, N: Normal<T>>(
     let e = restitution(vn, turf.restitution);
     let r = radius_m;
     let slip = u + r * w;
-    let impulse = turf.friction * (T::one() + e) * vn;
+    // (μ·v_n' beside the restitution: one multiply after it.)
+    let impulse = (T::one() + e) * (turf.friction * vn);
     let rolled = lit::<T>(3.5) * impulse >= slip.abs();
     let per_radius = T::one() / r;
     let (u1, w1) = if rolled {

@@ -147,13 +147,16 @@ pub(crate) fn low_hop<T: Real, H: Hopper<T>, N: Normal<T>>(
     let spin_at = |tau: T, rate0: T, jerk: T| {
         larger(spin0 + rate0 * tau + jerk * tau * tau * half, T::zero())
     };
+    // (`(j/2)·τ²` is `j·(τ²/2)` bit for bit, halving being exact: the half of `j` is
+    // ready before `τ`, one multiply fewer after it.)
     let state = |tau: T, j: &Vector3<T>| {
+        let tau_sq = tau * tau;
         (
             from.position
                 + from.velocity * tau
                 + a0 * (half * tau * tau)
                 + j * (sixth * tau * tau * tau),
-            from.velocity + a0 * tau + j * (half * tau * tau),
+            from.velocity + a0 * tau + (j * half) * tau_sq,
         )
     };
     // With `a(τ) = a₀ + jτ + qτ²` (q only in a wind profile, see below).

@@ -29,6 +29,9 @@ pub(crate) trait Normal<T: Real>: Copy {
     /// The square of the speed along the plane, `|v|² − v_n²` (at least 0), of a velocity
     /// `v` with `|v|² = speed_sq` and `v_n = max(−n̂·v, 0)` = `into` (the bounce's impact).
     fn tangential_sq(self, v: &Vector3<T>, speed_sq: T, into: T) -> T;
+    /// `|v|²` of a vector `v` in the plane (its normal component, zero or a rounding
+    /// residue, left out where the normal is `ŷ`).
+    fn norm_sq_in_plane(self, v: &Vector3<T>) -> T;
 }
 
 impl<T: Real> Normal<T> for Vector3<T> {
@@ -60,6 +63,11 @@ impl<T: Real> Normal<T> for Vector3<T> {
     #[inline(always)]
     fn tangential_sq(self, _: &Vector3<T>, speed_sq: T, into: T) -> T {
         larger(speed_sq - into * into, T::zero())
+    }
+
+    #[inline(always)]
+    fn norm_sq_in_plane(self, v: &Vector3<T>) -> T {
+        v.norm_squared()
     }
 }
 
@@ -100,6 +108,11 @@ impl<T: Real> Normal<T> for Level {
         let up = larger(v.y, T::zero());
         v.x * v.x + v.z * v.z + up * up
     }
+
+    #[inline(always)]
+    fn norm_sq_in_plane(self, v: &Vector3<T>) -> T {
+        v.x * v.x + v.z * v.z
+    }
 }
 
 #[cfg(test)]
@@ -127,6 +140,11 @@ mod tests {
                 Normal::tangential_sq(y, &v, speed_sq, into),
             );
             assert!((level - general).abs() <= 4.0 * f64::EPSILON * speed_sq);
+            let flat = Level.in_plane(&v);
+            assert_eq!(
+                Level.norm_sq_in_plane(&flat),
+                Normal::norm_sq_in_plane(y, &flat)
+            );
         }
     }
 }

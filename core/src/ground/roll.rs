@@ -152,7 +152,7 @@ impl<T: Real, N: Normal<T>> Roll<'_, '_, T, N> {
         let mut t = T::zero();
         let steps = (ROLL_TIME_CAP_S / ROLL_STEP_S) as u32;
         for _ in 0..steps {
-            let size = length(&slip);
+            let size = n.norm_sq_in_plane(&slip).root();
             if !(size > T::zero() && grip > T::zero()) {
                 break;
             }
@@ -169,11 +169,12 @@ impl<T: Real, N: Normal<T>> Roll<'_, '_, T, N> {
             } else {
                 size / closing
             };
-            let v1 = v + (g_t - dir * grip) * dt;
+            // (The pull's share first: after `dir`, one multiply and one subtraction.)
+            let v1 = (v + g_t * dt) - dir * (grip * dt);
             let w1 = w + n.cross(&dir) * (spin_per_grip * grip * dt);
             // The grass drag on the speed (never a gain, never a reversal):
             // `s' = max(s − A dt, 0)/(1 + B s dt)`, as the factor `s'/s` in one division.
-            let speed_sq = v1.norm_squared();
+            let speed_sq = n.norm_sq_in_plane(&v1);
             let speed = speed_sq.root();
             let scale = larger(speed - resist * dt, T::zero()) / (speed + drag * dt * speed_sq);
             let (v1, v1_in_plane) = if speed > T::zero() {
@@ -302,7 +303,8 @@ impl<T: Real, N: Normal<T>> Roll<'_, '_, T, N> {
     ///
     /// (`B = 0`: `v = v₀ − Aτ`, `x = v₀τ − Aτ²/2`).
     fn level(mut self, p0: Vector3<T>, v0: Vector3<T>, resist: T, cap: T) -> RollEnd<T> {
-        let u = length(&v0);
+        let u_sq = v0.norm_squared();
+        let u = u_sq.root();
         if !(u > T::zero()) {
             self.record(T::zero(), p0, Vector3::zeros());
             return RollEnd {
@@ -319,14 +321,16 @@ impl<T: Real, N: Normal<T>> Roll<'_, '_, T, N> {
         let root_c = c.root();
         let w = u * root_c;
         let k = resist * root_c;
-        let theta0 = crate::geometry::atan2_first_quadrant(w, T::one());
+        // θ₀ and the stop from w² = c·u² (not waiting on the square root of u²).
+        let w_sq = c * u_sq;
+        let theta0 = crate::geometry::atan2_first_quadrant_of_squares(w_sq, T::one());
         let stop = theta0 / k;
-        // x = ln(1 + w²)/(2Ac); for a huge w as 2 ln w (no overflow of w²).
+        // x = ln(1 + w²)/(2Ac); for a huge w as ln w² (ln_1p's series is for moderate w²).
         let per_b = T::one() / (resist * c);
-        let full = if w < lit(1.0e4) {
-            (w * w).ln_1p()
+        let full = if w_sq < lit(1.0e8) {
+            w_sq.ln_1p()
         } else {
-            w.ln() * lit(2.0)
+            w_sq.ln()
         } * (per_b * lit(0.5));
         let state = move |tau: T| {
             let (sn, cs) = (theta0 - k * tau).sin_cos();
