@@ -8,7 +8,7 @@ use super::normal::Normal;
 use crate::aero::{Dynamics, ForceEvaluation, ForceField, S, State};
 use crate::error::{Error, Result};
 use crate::integrator::{Method, events, integrate_to_event};
-use crate::real::{Real, larger, length, lit, smaller};
+use crate::real::{Real, larger, lit, smaller};
 use crate::trajectory::{Contact, Plane, Recorder, Stats};
 use nalgebra::Vector3;
 
@@ -328,6 +328,7 @@ impl<T: Real> Hopper<T> for Hops<'_, T> {
                 &start.dynamics,
                 from.time,
                 &start.y0,
+                start.spin_sq,
                 &plane,
                 cfg,
                 start.limit,
@@ -346,6 +347,8 @@ impl<T: Real> Hopper<T> for Hops<'_, T> {
 /// What a hop starts from: its state, dynamics, integrator and time left.
 struct HopStart<'s, T: Real> {
     y0: State<T>,
+    /// The square of the spin `y0[S]` (from the spin vector).
+    spin_sq: T,
     dynamics: Dynamics<'s, T>,
     method: Method<T>,
     limit: T,
@@ -360,7 +363,8 @@ impl<'s, T: Real> Hops<'s, T> {
         if !(limit > T::zero()) {
             return Err(Error::TimeLimit);
         }
-        let spin = length(&from.spin);
+        let spin_sq = from.spin.norm_squared();
+        let spin = spin_sq.root();
         let axis = if spin > T::zero() {
             from.spin / spin
         } else {
@@ -382,6 +386,7 @@ impl<'s, T: Real> Hops<'s, T> {
         }
         Ok(HopStart {
             y0: [p.x, p.y, p.z, v.x, v.y, v.z, spin],
+            spin_sq,
             dynamics: Dynamics { field, axis },
             method,
             limit,
