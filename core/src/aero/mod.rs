@@ -104,9 +104,8 @@ pub(crate) struct ForceEvaluation<T: Real> {
     /// Air speed `V` (m/s) and its square.
     speed: T,
     speed_sq: T,
-    /// Spin magnitude `s` (rad/s), and its square when the evaluation was given it.
+    /// Spin magnitude `s` (rad/s).
     spin: T,
-    spin_sq: Option<T>,
     /// Drag and lift factors `k_d`, `k_l` (1/s; 0 when off).
     drag: T,
     lift: T,
@@ -148,7 +147,6 @@ impl<T: Real> Dynamics<'_, T> {
             speed: zero,
             speed_sq: zero,
             spin: s,
-            spin_sq,
             drag: zero,
             lift: zero,
             decay: zero,
@@ -225,10 +223,11 @@ impl<T: Real> Dynamics<'_, T> {
     /// Gravity's share of `V̇` is left out on purpose: the speed dips towards the apex of a
     /// hop and is back at its landing, so over the hop it averages out (what a secant
     /// through both ends sees); lift does no work. In a wind profile `v_r` also changes
-    /// with height and this does not hold.
+    /// with height and this does not hold. `spin_sq`: the square of the spin `f` was
+    /// evaluated at, when it was given it ([`Dynamics::forces_given_spin_sq`]).
     #[cfg_attr(not(target_os = "none"), inline(always))]
-    pub(crate) fn rates_held(&self, f: &ForceEvaluation<T>) -> (Vector3<T>, T) {
-        self.rates_along(f, -f.drag)
+    pub(crate) fn rates_held(&self, f: &ForceEvaluation<T>, spin_sq: Option<T>) -> (Vector3<T>, T) {
+        self.rates_along(f, -f.drag, spin_sq)
     }
 
     /// The same rates at the instant of `f` (a tangent, not a hop's secant): the speed
@@ -241,12 +240,17 @@ impl<T: Real> Dynamics<'_, T> {
         } else {
             T::zero()
         };
-        self.rates_along(f, relative)
+        self.rates_along(f, relative, None)
     }
 
     /// The rates with the speed changing at the relative rate `V̇/V` (1/s).
     #[inline(always)]
-    fn rates_along(&self, f: &ForceEvaluation<T>, relative_speed_rate: T) -> (Vector3<T>, T) {
+    fn rates_along(
+        &self,
+        f: &ForceEvaluation<T>,
+        relative_speed_rate: T,
+        spin_sq: Option<T>,
+    ) -> (Vector3<T>, T) {
         let e = &self.field.effects;
         let a = f.acceleration;
         let (dkd, dkl) = if e.drag || e.lift {
@@ -254,7 +258,7 @@ impl<T: Real> Dynamics<'_, T> {
                 f.speed,
                 f.speed_sq,
                 f.spin,
-                f.spin_sq,
+                spin_sq,
                 relative_speed_rate,
                 f.spin_rate,
                 e.drag,

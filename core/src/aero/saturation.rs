@@ -57,9 +57,8 @@ pub(crate) struct Piece<T> {
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub(crate) struct SpinLaws<T> {
-    /// `R/S_first` (m): `κ = per_spin·s`, `y = κ/V`; and its square.
+    /// `R/S_first` (m): `κ = per_spin·s`, `y = κ/V`.
     per_spin: T,
-    per_spin_sq: T,
     /// `ρ_second = S_first/S_second` and its square.
     second: T,
     second_sq: T,
@@ -111,7 +110,6 @@ impl<T: Real> SpinLaws<T> {
         second_drag[0] = first.1;
         Self {
             per_spin: radius / first.2,
-            per_spin_sq: (radius / first.2) * (radius / first.2),
             second: rho,
             second_sq: rho * rho,
             rising: Piece {
@@ -135,7 +133,7 @@ impl<T: Real> SpinLaws<T> {
     fn piece(&self, spin: T, spin_sq: Option<T>, speed_sq: T) -> Option<(&Piece<T>, T, T)> {
         let kappa = self.per_spin * spin;
         let kappa_sq = match spin_sq {
-            Some(q) => self.per_spin_sq * q,
+            Some(q) => (self.per_spin * self.per_spin) * q,
             None => kappa * kappa,
         };
         let y_sq = kappa_sq / speed_sq;

@@ -121,14 +121,13 @@ pub(crate) fn rebound<T: Real, N: Normal<T>>(
     radius_m: T,
 ) -> Rebound<T> {
     let vn = larger(-n.dot(velocity), T::zero());
-    // The impact speed and the tangential speed from |v|² and v_n² (both squares side by
-    // side; not the length of the tangential velocity, which waits on v_n): with them
-    // `u² + v_n'² = |v|²` below holds to rounding (no `hypot`: libm's single-precision
-    // one works in f64, software on a Cortex-M4F). The impact angle from the squares too:
-    // its square root runs beside its polynomial.
+    // The impact speed and the tangential speed from the squares, side by side (no
+    // `hypot`: libm's single-precision one works in f64, software on a Cortex-M4F); with
+    // them `u² + v_n'² = |v|²` below holds to rounding. The impact angle from the squares
+    // too: its square root runs beside its polynomial.
     let speed_sq = velocity.norm_squared();
     let speed = speed_sq.root();
-    let vt_sq = n.tangential_sq(velocity, speed_sq, vn);
+    let vt_sq = n.tangential_sq(velocity);
     let vt = vt_sq.root();
     // The direction of the tangential velocity (off the critical path: only `w` and the
     // rebound's direction need it).

@@ -59,8 +59,14 @@ pub(crate) trait Hopper<T: Real> {
     ) -> ForceEvaluation<T>;
 
     /// The rates of change of the acceleration and of the spin rate over a short hop from
-    /// the evaluation `forces` of a ball spinning about `axis` (`aero::Dynamics::rates_held`).
-    fn rates_held(&self, forces: &ForceEvaluation<T>, axis: &Vector3<T>) -> (Vector3<T>, T);
+    /// the evaluation `forces` of a ball spinning about `axis` (`aero::Dynamics::rates_held`;
+    /// `spin_sq` as given to `forces`).
+    fn rates_held(
+        &self,
+        forces: &ForceEvaluation<T>,
+        axis: &Vector3<T>,
+        spin_sq: Option<T>,
+    ) -> (Vector3<T>, T);
 
     /// Whether the forces see a wind that changes with height (a profile).
     fn wind_varies(&self) -> bool;
@@ -174,7 +180,7 @@ pub(crate) fn low_hop<T: Real, H: Hopper<T>, N: Normal<T>>(
         }
     };
     let (j, spin_jerk, q, tau) = if form == HopForces::Held {
-        let (j, spin_jerk) = hopper.rates_held(&f0, &axis);
+        let (j, spin_jerk) = hopper.rates_held(&f0, &axis, Some(spin0_sq));
         (j, spin_jerk, None, hop_landing(vn, an, n.dot(&j))?)
     } else {
         // τ₁ and 1/τ₁ side by side (two divisions, neither waiting on the other).
@@ -296,12 +302,17 @@ impl<T: Real> Hopper<T> for Hops<'_, T> {
         }
     }
 
-    fn rates_held(&self, forces: &ForceEvaluation<T>, axis: &Vector3<T>) -> (Vector3<T>, T) {
+    fn rates_held(
+        &self,
+        forces: &ForceEvaluation<T>,
+        axis: &Vector3<T>,
+        spin_sq: Option<T>,
+    ) -> (Vector3<T>, T) {
         Dynamics {
             field: self.field,
             axis: *axis,
         }
-        .rates_held(forces)
+        .rates_held(forces, spin_sq)
     }
 
     fn wind_varies(&self) -> bool {

@@ -31,7 +31,7 @@ use hop::hop_landing;
 pub use hop::{HOP_MAX_FIRST_STEP_S, HOP_MAX_TOLERANCE, HOP_STEP_FACTOR, HOP_TOLERANCE_FACTOR};
 pub(crate) use hop::{HopForces, Hopper, Hops, low_hop};
 use nalgebra::Vector3;
-#[cfg(not(target_os = "none"))]
+#[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
 use normal::Level;
 use normal::Normal;
 pub use surface::{Surface, Turf};
@@ -183,9 +183,11 @@ pub struct Rollout<T: Real> {
 
 /// Bounces and rolls from the first landing `first` to rest.
 ///
-/// On level ground (`n̂ = ŷ` exactly) on hosts, with the normal's products as components
-/// ([`normal::Level`]): the same results, a shorter chain of dependent steps. Bare-metal
-/// targets keep one copy of the run-out (flash).
+/// On level ground (`n̂ = ŷ` exactly) with the normal's products as components
+/// ([`normal::Level`]): the same results to rounding, a shorter chain of dependent steps
+/// and fewer instructions, for a second copy of the run-out in flash (docs/ground.md).
+/// Not on bare-metal targets without a hardware FPU (the micro:bit's Cortex-M0, whose
+/// golden-test image would outgrow its 256 KiB): one copy there.
 pub(crate) fn run_out<T: Real, H: Hopper<T>>(
     ground: &PreparedGround<T>,
     gravity: T,
@@ -194,7 +196,7 @@ pub(crate) fn run_out<T: Real, H: Hopper<T>>(
     hopper: &H,
     recorder: Option<&mut Recorder<'_, T>>,
 ) -> Result<Rollout<T>> {
-    #[cfg(not(target_os = "none"))]
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
     if ground.normal == Vector3::y() {
         return run_out_on(
             ground,
