@@ -117,15 +117,43 @@ pub fn atan2_first_quadrant<T: Real>(y: T, x: T) -> T {
         };
     }
     let z = num / den;
-    // The degree-7 polynomial in z² by Estrin's scheme (four independent pairs, then z⁴
-    // and z⁸): four multiply–adds deep instead of Horner's seven.
-    let z2 = z * z;
+    let angle = z * atan_over_z(z * z);
+    if steep { T::frac_pi_2() - angle } else { angle }
+}
+
+/// [`atan2_first_quadrant`] of `y, x ≥ 0` from their squares `y²`, `x²` (same polynomial,
+/// within 4·10⁻⁸ rad of libm): `z² = min/max` of the squares is one division, and `z = √z²`
+/// runs beside the polynomial in `z²` instead of before it (the bounce waits on the
+/// angle; docs/ground.md). For squares that neither underflow to zero nor overflow
+/// (`|y|, |x|` within about `10^±150` in `f64`; the core's speeds are). `0` for `(0, 0)`;
+/// NaN in, NaN out.
+#[inline]
+#[must_use]
+pub(crate) fn atan2_first_quadrant_of_squares<T: Real>(y_sq: T, x_sq: T) -> T {
+    let steep = y_sq > x_sq;
+    let (num, den) = if steep { (x_sq, y_sq) } else { (y_sq, x_sq) };
+    if !(den > T::zero()) {
+        return if num.partial_cmp(&den).is_none() {
+            num + den
+        } else {
+            T::zero()
+        };
+    }
+    let z_sq = num / den;
+    let angle = z_sq.root() * atan_over_z(z_sq);
+    if steep { T::frac_pi_2() - angle } else { angle }
+}
+
+/// `atan(z)/z` for `0 ≤ z ≤ 1` from `z²`: A&S 4.4.49's degree-7 polynomial in `z²` by
+/// Estrin's scheme (four independent pairs, then `z⁴` and `z⁸`), four multiply–adds deep
+/// instead of Horner's seven.
+#[inline(always)]
+fn atan_over_z<T: Real>(z2: T) -> T {
     let z4 = z2 * z2;
     let pair = |i: usize| lit::<T>(ATAN_A[i + 1]) * z2 + lit(ATAN_A[i]);
     let low = pair(2) * z4 + pair(0);
     let high = pair(6) * z4 + pair(4);
-    let angle = (high * (z4 * z4) + low) * z;
-    if steep { T::frac_pi_2() - angle } else { angle }
+    high * (z4 * z4) + low
 }
 
 /// `Rx(θ)`: turns +Y towards +Z.
@@ -221,6 +249,28 @@ mod tests {
             }
         }
         assert!(worst <= 4e-8, "{worst}"); // A&S: 2e-8, plus the rounding
+        let mut worst_sq = 0.0_f64;
+        for i in 0..=2000 {
+            for (y, x) in [(f64::from(i) / 2000.0, 1.0), (1.0, f64::from(i) / 2000.0)] {
+                for scale in [1e-30, 0.7, 3.0e4] {
+                    let (y, x) = (y * scale, x * scale);
+                    let got = atan2_first_quadrant_of_squares(y * y, x * x);
+                    worst_sq = worst_sq.max((got - y.atan2(x)).abs());
+                    let (ys, xs) = (y as f32, x as f32);
+                    if scale > 1.0e-3 {
+                        let single = atan2_first_quadrant_of_squares(ys * ys, xs * xs);
+                        assert!((f64::from(single) - y.atan2(x)).abs() < 3e-7, "{y} {x}");
+                    }
+                }
+            }
+        }
+        assert!(worst_sq <= 4e-8, "{worst_sq}");
+        assert_eq!(atan2_first_quadrant_of_squares(0.0_f64, 0.0), 0.0);
+        assert_eq!(
+            atan2_first_quadrant_of_squares(25.0_f64, 0.0),
+            core::f64::consts::FRAC_PI_2
+        );
+        assert!(atan2_first_quadrant_of_squares(f64::NAN, 1.0).is_nan());
         assert_eq!(atan2_first_quadrant(0.0_f64, 0.0), 0.0);
         assert_eq!(
             atan2_first_quadrant(5.0_f64, 0.0),

@@ -130,6 +130,7 @@ impl<T: Real> Dynamics<'_, T> {
     fn forces_switched(
         &self,
         y: &State<T>,
+        spin_sq: Option<T>,
         drag: bool,
         lift: bool,
         decay: bool,
@@ -156,7 +157,10 @@ impl<T: Real> Dynamics<'_, T> {
             let speed = speed_sq.root();
             (f.relative_velocity, f.speed, f.speed_sq) = (vr, speed, speed_sq);
             if drag || lift {
-                let (kd, kl) = p.aero.forces.factors(speed, speed_sq, s, drag, lift);
+                let (kd, kl) = p
+                    .aero
+                    .forces
+                    .factors(speed, speed_sq, s, spin_sq, drag, lift);
                 if drag {
                     f.acceleration -= vr * kd;
                     f.drag = kd;
@@ -184,7 +188,7 @@ impl<T: Real> Dynamics<'_, T> {
         decay: bool,
         wind: bool,
     ) -> State<T> {
-        self.forces_switched(y, drag, lift, decay, wind)
+        self.forces_switched(y, None, drag, lift, decay, wind)
             .derivative(y)
     }
 
@@ -194,7 +198,17 @@ impl<T: Real> Dynamics<'_, T> {
     #[cfg_attr(not(target_os = "none"), inline(always))]
     pub(crate) fn forces(&self, y: &State<T>) -> ForceEvaluation<T> {
         let e = &self.field.effects;
-        self.forces_switched(y, e.drag, e.lift, e.spin_decay, self.field.has_wind())
+        self.forces_switched(y, None, e.drag, e.lift, e.spin_decay, self.field.has_wind())
+    }
+
+    /// [`Dynamics::forces`] given also the square of the spin `y[S]`, `spin_sq` (a hop's,
+    /// from its spin vector): the spin laws take `(S/S_c)²` from it, not waiting on the
+    /// square root that gives `y[S]` (the same force to rounding).
+    #[cfg_attr(not(target_os = "none"), inline(always))]
+    pub(crate) fn forces_given_spin_sq(&self, y: &State<T>, spin_sq: T) -> ForceEvaluation<T> {
+        let e = &self.field.effects;
+        let wind = self.field.has_wind();
+        self.forces_switched(y, Some(spin_sq), e.drag, e.lift, e.spin_decay, wind)
     }
 
     /// The rates of change of the acceleration and of the spin rate over a short hop
@@ -209,10 +223,11 @@ impl<T: Real> Dynamics<'_, T> {
     /// Gravity's share of `V̇` is left out on purpose: the speed dips towards the apex of a
     /// hop and is back at its landing, so over the hop it averages out (what a secant
     /// through both ends sees); lift does no work. In a wind profile `v_r` also changes
-    /// with height and this does not hold.
+    /// with height and this does not hold. `spin_sq`: the square of the spin `f` was
+    /// evaluated at, when it was given it ([`Dynamics::forces_given_spin_sq`]).
     #[cfg_attr(not(target_os = "none"), inline(always))]
-    pub(crate) fn rates_held(&self, f: &ForceEvaluation<T>) -> (Vector3<T>, T) {
-        self.rates_along(f, -f.drag)
+    pub(crate) fn rates_held(&self, f: &ForceEvaluation<T>, spin_sq: Option<T>) -> (Vector3<T>, T) {
+        self.rates_along(f, -f.drag, spin_sq)
     }
 
     /// The same rates at the instant of `f` (a tangent, not a hop's secant): the speed
@@ -225,12 +240,17 @@ impl<T: Real> Dynamics<'_, T> {
         } else {
             T::zero()
         };
-        self.rates_along(f, relative)
+        self.rates_along(f, relative, None)
     }
 
     /// The rates with the speed changing at the relative rate `V̇/V` (1/s).
     #[inline(always)]
-    fn rates_along(&self, f: &ForceEvaluation<T>, relative_speed_rate: T) -> (Vector3<T>, T) {
+    fn rates_along(
+        &self,
+        f: &ForceEvaluation<T>,
+        relative_speed_rate: T,
+        spin_sq: Option<T>,
+    ) -> (Vector3<T>, T) {
         let e = &self.field.effects;
         let a = f.acceleration;
         let (dkd, dkl) = if e.drag || e.lift {
@@ -238,6 +258,7 @@ impl<T: Real> Dynamics<'_, T> {
                 f.speed,
                 f.speed_sq,
                 f.spin,
+                spin_sq,
                 relative_speed_rate,
                 f.spin_rate,
                 e.drag,

@@ -239,8 +239,19 @@ impl<T: Real> Forces<T> {
     ///
     /// The modern family's two divisions (the lift's `s²/V²` and the crisis) need only `V²`,
     /// so they run beside the square root rather than after it.
+    ///
+    /// `spin_sq`: the spin's square when known apart from `spin` (a hop's; see
+    /// `SpinLaws::piece`), else `None`.
     #[inline(always)]
-    pub(crate) fn factors(&self, speed: T, speed_sq: T, spin: T, drag: bool, lift: bool) -> (T, T) {
+    pub(crate) fn factors(
+        &self,
+        speed: T,
+        speed_sq: T,
+        spin: T,
+        spin_sq: Option<T>,
+        drag: bool,
+        lift: bool,
+    ) -> (T, T) {
         let zero = T::zero();
         match *self {
             Self::Linear {
@@ -268,7 +279,7 @@ impl<T: Real> Forces<T> {
                 // Both laws as `P + Q·V` with P, Q from V² and s alone, so the square root
                 // is the last input the force waits for: one multiply–add after it, as for
                 // the linear family. At V = 0 the laws are past saturation: `Q·0 = 0`.
-                let ((lift_0, lift_1), (drag_0, drag_1)) = spin_laws.at(spin, speed_sq);
+                let ((lift_0, lift_1), (drag_0, drag_1)) = spin_laws.at(spin, spin_sq, speed_sq);
                 // The crisis term, the last to be ready, joins in the last addition.
                 let kd = if drag {
                     (drag_0 + drag_v * speed) + (drag_1 * speed + crisis.at(speed_sq) * speed)
@@ -293,11 +304,13 @@ impl<T: Real> Forces<T> {
     /// family's spin term is left out: it is zero past the lift's saturation, and below it
     /// the spin decays by about 1–2 % a second at run-out speeds.
     #[allow(clippy::too_many_arguments)]
+    #[cfg_attr(not(target_os = "none"), inline(always))]
     pub(crate) fn factor_rates(
         &self,
         speed: T,
         speed_sq: T,
         spin: T,
+        spin_sq: Option<T>,
         relative_speed_rate: T,
         spin_rate: T,
         drag: bool,
@@ -307,13 +320,14 @@ impl<T: Real> Forces<T> {
         let speed_rate = relative_speed_rate * speed;
         match *self {
             // Linear in V and s: the rates are the laws at (V̇, ṡ).
-            Self::Linear { .. } => self.factors(speed_rate, zero, spin_rate, drag, lift),
+            Self::Linear { .. } => self.factors(speed_rate, zero, spin_rate, None, drag, lift),
             Self::Modern {
                 drag_v,
                 crisis,
                 spin: ref spin_laws,
             } => {
-                let (lift_rate, drag_rate) = spin_laws.speed_derivatives(spin, speed, speed_sq);
+                let (lift_rate, drag_rate) =
+                    spin_laws.speed_derivatives(spin, spin_sq, speed, speed_sq);
                 let dkd = if drag {
                     let c = crisis.weight(speed_sq);
                     let crisis_per_speed = crisis.below * c * (lit::<T>(6.0) * c - lit::<T>(5.0));
@@ -348,7 +362,7 @@ mod tests {
                 panic!("prepare")
             };
             let linear = matches!(p.forces, Forces::Linear { .. });
-            let k = |v: f64, s: f64| p.forces.factors(v, v * v, s, true, true);
+            let k = |v: f64, s: f64| p.forces.factors(v, v * v, s, None, true, true);
             for (v, s) in [
                 (6.0, 290.0),
                 (20.0, 150.0),
@@ -357,9 +371,9 @@ mod tests {
                 (3.0, 800.0),
             ] {
                 let (rel, spin_rate) = (-0.05, if linear { -3.0 } else { 0.0 });
-                let (dkd, dkl) = p
-                    .forces
-                    .factor_rates(v, v * v, s, rel, spin_rate, true, true);
+                let (dkd, dkl) =
+                    p.forces
+                        .factor_rates(v, v * v, s, None, rel, spin_rate, true, true);
                 let dt = 1e-4;
                 let (v1, s1) = (v * (1.0 + rel * dt), s + spin_rate * dt);
                 let (v0, s0) = (v * (1.0 - rel * dt), s - spin_rate * dt);

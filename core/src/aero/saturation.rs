@@ -126,11 +126,17 @@ impl<T: Real> SpinLaws<T> {
     }
 
     /// The piece, `κ` and `u²` at spin `s` and `V² = speed_sq`; `None` past both
-    /// saturations (also at `V = 0`, where `y² = ∞` or NaN).
+    /// saturations (also at `V = 0`, where `y² = ∞` or NaN). With the spin's square
+    /// `spin_sq` given (a hop's, from the spin vector), `κ² = (R/S_first)²·s²` from it: the
+    /// division does not wait on the square root that gives `s`.
     #[inline(always)]
-    fn piece(&self, spin: T, speed_sq: T) -> Option<(&Piece<T>, T, T)> {
+    fn piece(&self, spin: T, spin_sq: Option<T>, speed_sq: T) -> Option<(&Piece<T>, T, T)> {
         let kappa = self.per_spin * spin;
-        let y_sq = kappa * kappa / speed_sq;
+        let kappa_sq = match spin_sq {
+            Some(q) => (self.per_spin * self.per_spin) * q,
+            None => kappa * kappa,
+        };
+        let y_sq = kappa_sq / speed_sq;
         if y_sq < T::one() {
             Some((&self.rising, kappa, y_sq))
         } else {
@@ -140,10 +146,11 @@ impl<T: Real> SpinLaws<T> {
     }
 
     /// `((P_L, Q_L), (P_D, Q_D))`: `A·C_L·V = P_L + Q_L·V` and `A·C_D,spin·V = P_D + Q_D·V`
-    /// at spin `s` and `V² = speed_sq`, from `V²` alone.
+    /// at spin `s` (its square `spin_sq`, if known: [`SpinLaws::piece`]) and `V² = speed_sq`,
+    /// from `V²` alone.
     #[inline(always)]
-    pub(crate) fn at(&self, spin: T, speed_sq: T) -> ((T, T), (T, T)) {
-        match self.piece(spin, speed_sq) {
+    pub(crate) fn at(&self, spin: T, spin_sq: Option<T>, speed_sq: T) -> ((T, T), (T, T)) {
+        match self.piece(spin, spin_sq, speed_sq) {
             Some((p, kappa, u_sq)) => (p.lift.at(kappa, u_sq), p.drag.at(kappa, u_sq)),
             None => (
                 (T::zero(), self.lift_saturated),
@@ -152,9 +159,16 @@ impl<T: Real> SpinLaws<T> {
         }
     }
 
-    /// `(V·∂(A·C_L·V)/∂V, V·∂(A·C_D,spin·V)/∂V)` at spin `s`, speed `V` and `V² = speed_sq`.
-    pub(crate) fn speed_derivatives(&self, spin: T, speed: T, speed_sq: T) -> (T, T) {
-        match self.piece(spin, speed_sq) {
+    /// `(V·∂(A·C_L·V)/∂V, V·∂(A·C_D,spin·V)/∂V)` at spin `s` (its square `spin_sq`, if
+    /// known), speed `V` and `V² = speed_sq`.
+    pub(crate) fn speed_derivatives(
+        &self,
+        spin: T,
+        spin_sq: Option<T>,
+        speed: T,
+        speed_sq: T,
+    ) -> (T, T) {
+        match self.piece(spin, spin_sq, speed_sq) {
             Some((p, kappa, u_sq)) => (
                 p.lift.speed_derivative(kappa, u_sq, speed),
                 p.drag.speed_derivative(kappa, u_sq, speed),
@@ -186,17 +200,17 @@ mod tests {
                     let pick = |c: (f64, f64, f64)| if i == 0 { c.0 } else { c.1 };
                     (pick(one) * sat(big_s / one.2) + pick(other) * sat(big_s / other.2)) * v
                 };
-                let ((pl, ql), (pd, qd)) = laws.at(s, v * v);
+                let ((pl, ql), (pd, qd)) = laws.at(s, None, v * v);
                 assert!((pl + ql * v - direct(0)).abs() < 1e-12, "{v} {s}");
                 assert!((pd + qd * v - direct(1)).abs() < 1e-12, "{v} {s}");
                 // The speed derivative against a central difference.
                 let h = 1e-6 * v;
                 let law = |v: f64| {
-                    let ((pl, ql), (pd, qd)) = laws.at(s, v * v);
+                    let ((pl, ql), (pd, qd)) = laws.at(s, None, v * v);
                     (pl + ql * v, pd + qd * v)
                 };
                 let ((l1, d1), (l0, d0)) = (law(v + h), law(v - h));
-                let (dl, dd) = laws.speed_derivatives(s, v, v * v);
+                let (dl, dd) = laws.speed_derivatives(s, None, v, v * v);
                 assert!((dl - v * (l1 - l0) / (2.0 * h)).abs() < 1e-6, "{v} {s}");
                 assert!((dd - v * (d1 - d0) / (2.0 * h)).abs() < 1e-6, "{v} {s}");
             }

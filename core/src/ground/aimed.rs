@@ -31,7 +31,8 @@ use nalgebra::Vector3;
 /// the step.
 pub const AIMED_MAX_CORRECTION: f64 = 0.25;
 
-/// The hop from `from` (its state `y0`, spin magnitude and unit axis as in `dynamics`) to
+/// The hop from `from` (its state `y0`, the square `spin_sq` of its spin `y0[S]`, spin
+/// magnitude and unit axis as in `dynamics`) to
 /// its landing on `plane`, in one aimed step at the hop tolerances `cfg` within `limit`
 /// seconds; `None` when the step is rejected or the landing is too far from its end (see
 /// the module docs). Evaluations and the step count into `stats` either way.
@@ -40,6 +41,7 @@ pub(crate) fn aimed_hop<T: Real>(
     dynamics: &Dynamics<'_, T>,
     from_time: T,
     y0: &State<T>,
+    spin_sq: T,
     plane: &Plane<T>,
     cfg: &Adaptive<T>,
     limit: T,
@@ -47,7 +49,8 @@ pub(crate) fn aimed_hop<T: Real>(
     stats: &mut Stats,
 ) -> Option<Contact<T>> {
     let n = plane.normal;
-    let f0 = dynamics.forces(y0);
+    // (The spin laws from the spin's square: not waiting on its square root.)
+    let f0 = dynamics.forces_given_spin_sq(y0, spin_sq);
     stats.force_evaluations = stats.force_evaluations.saturating_add(1);
     let k1 = f0.derivative(y0);
     let vn0 = n.dot(&Vector3::new(y0[3], y0[4], y0[5]));

@@ -33,6 +33,7 @@
 //! plus rotation) than the impact: `e ≤ e₀ ≤ 1`, the tilt is a rotation, and friction
 //! stops at rolling.
 
+use super::normal::Normal;
 use super::surface::{PENNER_RESTITUTION_0, Turf};
 use crate::real::{Real, larger, length, lit, smaller};
 use nalgebra::Vector3;
@@ -112,28 +113,30 @@ fn tangent_direction<T: Real>(
 /// speed is the length of the tangential velocity (not a dot product after normalising),
 /// the impact speed's square root runs beside it, and the crater law's constant factors
 /// are one product.
-pub(crate) fn rebound<T: Real>(
+pub(crate) fn rebound<T: Real, N: Normal<T>>(
     velocity: &Vector3<T>,
     spin: &Vector3<T>,
-    n: &Vector3<T>,
+    n: N,
     turf: &Turf<T>,
     radius_m: T,
 ) -> Rebound<T> {
-    let vn = larger(-velocity.dot(n), T::zero());
-    // The impact speed and the tangential speed from |v|² and v_n² (both squares side by
-    // side; not the length of the tangential velocity, which waits on v_n): with them
-    // `u² + v_n'² = |v|²` below holds to rounding (no `hypot`: libm's single-precision
-    // one works in f64, software on a Cortex-M4F).
+    let vn = larger(-n.dot(velocity), T::zero());
+    // The impact speed and the tangential speed from the squares, side by side (no
+    // `hypot`: libm's single-precision one works in f64, software on a Cortex-M4F); with
+    // them `u² + v_n'² = |v|²` below holds to rounding. The impact angle from the squares
+    // too: its square root runs beside its polynomial.
     let speed_sq = velocity.norm_squared();
     let speed = speed_sq.root();
-    let vt = larger(speed_sq - vn * vn, T::zero()).root();
+    let vt_sq = n.tangential_sq(velocity);
+    let vt = vt_sq.root();
     // The direction of the tangential velocity (off the critical path: only `w` and the
     // rebound's direction need it).
-    let vt_vec = velocity + n * vn;
-    let t = tangent_direction(&vt_vec, length(&vt_vec), spin, n);
-    let b = t.cross(n);
+    let vt_vec = velocity + n.scaled(vn);
+    let t = tangent_direction(&vt_vec, length(&vt_vec), spin, &n.vector());
+    // b̂ = t̂ × n̂ = −(n̂ × t̂)
+    let b = -n.cross(&t);
     let w = spin.dot(&b);
-    let phi = crate::geometry::atan2_first_quadrant(vt, vn);
+    let phi = crate::geometry::atan2_first_quadrant_of_squares(vt_sq, vn * vn);
     // θ_c = κ·15.4°·(v/18.6)·(φ/44.4°)·min(1, v_n/v_f): everything but φ first.
     let per_speed_angle =
         lit::<T>(CRATER_REFERENCE_RAD / (CRATER_REFERENCE_SPEED_MPS * CRATER_REFERENCE_ANGLE_RAD));
@@ -147,7 +150,8 @@ pub(crate) fn rebound<T: Real>(
     let e = restitution(vn, turf.restitution);
     let r = radius_m;
     let slip = u + r * w;
-    let impulse = turf.friction * (T::one() + e) * vn;
+    // (μ·v_n' beside the restitution: one multiply after it.)
+    let impulse = (T::one() + e) * (turf.friction * vn);
     let rolled = lit::<T>(3.5) * impulse >= slip.abs();
     let per_radius = T::one() / r;
     let (u1, w1) = if rolled {
@@ -165,8 +169,8 @@ pub(crate) fn rebound<T: Real>(
         )
     };
     let v1 = e * vn;
-    let t1 = t * c + n * s;
-    let n1 = n * c - t * s;
+    let t1 = t * c + n.scaled(s);
+    let n1 = n.scaled(c) - t * s;
     let mut out = t1 * u1 + n1 * v1;
     // The rebound's normal speed `out·n̂ = u'·sin θ_c + v'·cos θ_c` (t̂ ⊥ n̂), beside `out`
     // rather than a dot product after it. A fast backward exit out of the tilted crater
@@ -174,7 +178,7 @@ pub(crate) fn rebound<T: Real>(
     // along it).
     let mut normal_speed = u1 * s + v1 * c;
     if normal_speed < T::zero() {
-        out -= n * normal_speed;
+        out -= n.scaled(normal_speed);
         normal_speed = T::zero();
     }
     Rebound {

@@ -4,10 +4,11 @@
 //! its event search. The run-out ([`super::run_out`]) takes them through [`Hopper`].
 
 use super::aimed;
+use super::normal::Normal;
 use crate::aero::{Dynamics, ForceEvaluation, ForceField, S, State};
 use crate::error::{Error, Result};
 use crate::integrator::{Method, events, integrate_to_event};
-use crate::real::{Real, larger, length, lit, smaller};
+use crate::real::{Real, larger, lit, smaller};
 use crate::trajectory::{Contact, Plane, Recorder, Stats};
 use nalgebra::Vector3;
 
@@ -44,20 +45,28 @@ pub(crate) trait Hopper<T: Real> {
 
     /// The acceleration (m/s², G, gravity included), the rate of change of the spin
     /// magnitude (rad/s²) and the coefficients behind them, of a ball at `position` with
-    /// `velocity`, spinning at `spin` (rad/s) about the unit `axis` (zero without spin):
-    /// one force evaluation.
+    /// `velocity`, spinning at `spin` (rad/s; its square `spin_sq` if known apart from it,
+    /// see `aero::Dynamics::forces_given_spin_sq`) about the unit `axis` (zero without
+    /// spin): one force evaluation.
     fn forces(
         &self,
         position: &Vector3<T>,
         velocity: &Vector3<T>,
         spin: T,
+        spin_sq: Option<T>,
         axis: &Vector3<T>,
         stats: &mut Stats,
     ) -> ForceEvaluation<T>;
 
     /// The rates of change of the acceleration and of the spin rate over a short hop from
-    /// the evaluation `forces` of a ball spinning about `axis` (`aero::Dynamics::rates_held`).
-    fn rates_held(&self, forces: &ForceEvaluation<T>, axis: &Vector3<T>) -> (Vector3<T>, T);
+    /// the evaluation `forces` of a ball spinning about `axis` (`aero::Dynamics::rates_held`;
+    /// `spin_sq` as given to `forces`).
+    fn rates_held(
+        &self,
+        forces: &ForceEvaluation<T>,
+        axis: &Vector3<T>,
+        spin_sq: Option<T>,
+    ) -> (Vector3<T>, T);
 
     /// Whether the forces see a wind that changes with height (a profile).
     fn wind_varies(&self) -> bool;
@@ -105,27 +114,36 @@ impl HopForces {
 ///   the acceleration is quadratic in time through the three.
 ///
 /// `None` when the force does not pull the ball back to the plane.
-pub(crate) fn low_hop<T: Real, H: Hopper<T>>(
+pub(crate) fn low_hop<T: Real, H: Hopper<T>, N: Normal<T>>(
     from: &Contact<T>,
-    n: &Vector3<T>,
+    n: N,
     hopper: &H,
     form: HopForces,
     stats: &mut Stats,
     recorder: Option<&mut Recorder<'_, T>>,
 ) -> Option<Contact<T>> {
-    // The spin axis is fixed in flight: its magnitude and direction once.
-    let spin0 = length(&from.spin);
+    // The spin axis is fixed in flight: its magnitude and direction once (the force's spin
+    // laws from the square, beside the square root).
+    let spin0_sq = from.spin.norm_squared();
+    let spin0 = spin0_sq.root();
     let axis = if spin0 > T::zero() {
         from.spin / spin0
     } else {
         Vector3::zeros()
     };
-    let f0 = hopper.forces(&from.position, &from.velocity, spin0, &axis, stats);
+    let f0 = hopper.forces(
+        &from.position,
+        &from.velocity,
+        spin0,
+        Some(spin0_sq),
+        &axis,
+        stats,
+    );
     let (a0, s0) = (f0.acceleration, f0.spin_rate);
-    let vn = from.velocity.dot(n);
+    let vn = n.dot(&from.velocity);
     let two = lit::<T>(2.0);
     // First guess: the parabola of the initial force.
-    let an = a0.dot(n);
+    let an = n.dot(&a0);
     if !(an < T::zero()) {
         return None;
     }
@@ -135,13 +153,16 @@ pub(crate) fn low_hop<T: Real, H: Hopper<T>>(
     let spin_at = |tau: T, rate0: T, jerk: T| {
         larger(spin0 + rate0 * tau + jerk * tau * tau * half, T::zero())
     };
+    // (`(j/2)·τ²` is `j·(τ²/2)` bit for bit, halving being exact: the half of `j` is
+    // ready before `τ`, one multiply fewer after it.)
     let state = |tau: T, j: &Vector3<T>| {
+        let tau_sq = tau * tau;
         (
             from.position
                 + from.velocity * tau
                 + a0 * (half * tau * tau)
                 + j * (sixth * tau * tau * tau),
-            from.velocity + a0 * tau + j * (half * tau * tau),
+            from.velocity + a0 * tau + (j * half) * tau_sq,
         )
     };
     // With `a(τ) = a₀ + jτ + qτ²` (q only in a wind profile, see below).
@@ -159,30 +180,30 @@ pub(crate) fn low_hop<T: Real, H: Hopper<T>>(
         }
     };
     let (j, spin_jerk, q, tau) = if form == HopForces::Held {
-        let (j, spin_jerk) = hopper.rates_held(&f0, &axis);
-        (j, spin_jerk, None, hop_landing(vn, an, j.dot(n))?)
+        let (j, spin_jerk) = hopper.rates_held(&f0, &axis, Some(spin0_sq));
+        (j, spin_jerk, None, hop_landing(vn, an, n.dot(&j))?)
     } else {
         // τ₁ and 1/τ₁ side by side (two divisions, neither waiting on the other).
         let t1 = -two * vn / an;
         let per_t1 = -an / (two * vn);
         let zero = Vector3::zeros();
         let (p1, v1) = state(t1, &zero);
-        let f1 = hopper.forces(&p1, &v1, spin_at(t1, s0, T::zero()), &axis, stats);
+        let f1 = hopper.forces(&p1, &v1, spin_at(t1, s0, T::zero()), None, &axis, stats);
         let a1 = f1.acceleration;
         let (j, spin_jerk) = ((a1 - a0) * per_t1, (f1.spin_rate - s0) * per_t1);
         // jn = j·n from the normal accelerations (one dot product after a₁, not two steps).
-        let tau = hop_landing(vn, an, (a1.dot(n) - an) * per_t1)?;
+        let tau = hop_landing(vn, an, (n.dot(&a1) - an) * per_t1)?;
         // Through the three, `j = (4a_m − 3a₀ − a₁)/τ₁`, `q = 2(a₀ + a₁ − 2a_m)/τ₁²`; the
         // landing by Newton's method from the two-end root on
         // `vn + a_nτ/2 + j_nτ²/6 + q_nτ³/12 = 0`.
         let tm = t1 * half;
         let (pm, vm) = state(tm, &j);
         let am = hopper
-            .forces(&pm, &vm, spin_at(tm, s0, spin_jerk), &axis, stats)
+            .forces(&pm, &vm, spin_at(tm, s0, spin_jerk), None, &axis, stats)
             .acceleration;
         let j = (am * lit::<T>(4.0) - a0 * lit::<T>(3.0) - a1) * per_t1;
         let q = (a0 + a1 - am * two) * (two * per_t1 * per_t1);
-        let (jn, qn) = (j.dot(n), q.dot(n));
+        let (jn, qn) = (n.dot(&j), n.dot(&q));
         let mut tau = tau;
         for _ in 0..3 {
             let g = vn + tau * (an * half + tau * (jn * sixth + tau * qn * lit(1.0 / 12.0)));
@@ -265,23 +286,33 @@ impl<T: Real> Hopper<T> for Hops<'_, T> {
         p: &Vector3<T>,
         v: &Vector3<T>,
         spin: T,
+        spin_sq: Option<T>,
         axis: &Vector3<T>,
         stats: &mut Stats,
     ) -> ForceEvaluation<T> {
         stats.force_evaluations = stats.force_evaluations.saturating_add(1);
-        Dynamics {
+        let dynamics = Dynamics {
             field: self.field,
             axis: *axis,
+        };
+        let y = [p.x, p.y, p.z, v.x, v.y, v.z, spin];
+        match spin_sq {
+            Some(q) => dynamics.forces_given_spin_sq(&y, q),
+            None => dynamics.forces(&y),
         }
-        .forces(&[p.x, p.y, p.z, v.x, v.y, v.z, spin])
     }
 
-    fn rates_held(&self, forces: &ForceEvaluation<T>, axis: &Vector3<T>) -> (Vector3<T>, T) {
+    fn rates_held(
+        &self,
+        forces: &ForceEvaluation<T>,
+        axis: &Vector3<T>,
+        spin_sq: Option<T>,
+    ) -> (Vector3<T>, T) {
         Dynamics {
             field: self.field,
             axis: *axis,
         }
-        .rates_held(forces)
+        .rates_held(forces, spin_sq)
     }
 
     fn wind_varies(&self) -> bool {
@@ -308,6 +339,7 @@ impl<T: Real> Hopper<T> for Hops<'_, T> {
                 &start.dynamics,
                 from.time,
                 &start.y0,
+                start.spin_sq,
                 &plane,
                 cfg,
                 start.limit,
@@ -326,6 +358,8 @@ impl<T: Real> Hopper<T> for Hops<'_, T> {
 /// What a hop starts from: its state, dynamics, integrator and time left.
 struct HopStart<'s, T: Real> {
     y0: State<T>,
+    /// The square of the spin `y0[S]` (from the spin vector).
+    spin_sq: T,
     dynamics: Dynamics<'s, T>,
     method: Method<T>,
     limit: T,
@@ -340,7 +374,8 @@ impl<'s, T: Real> Hops<'s, T> {
         if !(limit > T::zero()) {
             return Err(Error::TimeLimit);
         }
-        let spin = length(&from.spin);
+        let spin_sq = from.spin.norm_squared();
+        let spin = spin_sq.root();
         let axis = if spin > T::zero() {
             from.spin / spin
         } else {
@@ -362,6 +397,7 @@ impl<'s, T: Real> Hops<'s, T> {
         }
         Ok(HopStart {
             y0: [p.x, p.y, p.z, v.x, v.y, v.z, spin],
+            spin_sq,
             dynamics: Dynamics { field, axis },
             method,
             limit,
@@ -581,7 +617,7 @@ mod tests {
                 let from = leaving(v, w);
                 let mut stats = Stats::default();
                 let form = HopForces::for_wind(hops.wind_varies());
-                let Some(closed) = low_hop(&from, &n, &hops, form, &mut stats, None) else {
+                let Some(closed) = low_hop(&from, n, &hops, form, &mut stats, None) else {
                     panic!("closed form {v:?}")
                 };
                 assert_eq!(stats.force_evaluations, evaluations);

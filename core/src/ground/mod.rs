@@ -18,6 +18,7 @@
 mod aimed;
 pub mod bounce;
 mod hop;
+mod normal;
 pub mod roll;
 pub mod surface;
 
@@ -30,6 +31,9 @@ use hop::hop_landing;
 pub use hop::{HOP_MAX_FIRST_STEP_S, HOP_MAX_TOLERANCE, HOP_STEP_FACTOR, HOP_TOLERANCE_FACTOR};
 pub(crate) use hop::{HopForces, Hopper, Hops, low_hop};
 use nalgebra::Vector3;
+#[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+use normal::Level;
+use normal::Normal;
 pub use surface::{Surface, Turf};
 
 /// A rebound lower than this (m) ends the bouncing: the ball rolls (Penner 2002: 5 mm).
@@ -137,7 +141,7 @@ impl<T: Real> PreparedGround<T> {
     ) -> Result<bounce::Rebound<T>> {
         let v = finite_vector(velocity_mps, Field::BallVelocity)?;
         let w = finite_vector(spin_radps, Field::BallSpin)?;
-        let r = bounce::rebound(&v, &w, &self.normal, &self.turf, self.radius);
+        let r = bounce::rebound(&v, &w, self.normal, &self.turf, self.radius);
         finite_vector(&r.velocity_mps, Field::BallVelocity)?;
         finite_vector(&r.spin_radps, Field::BallSpin)?;
         Ok(r)
@@ -178,6 +182,12 @@ pub struct Rollout<T: Real> {
 }
 
 /// Bounces and rolls from the first landing `first` to rest.
+///
+/// On level ground (`n̂ = ŷ` exactly) with the normal's products as components
+/// ([`normal::Level`]): the same results to rounding, a shorter chain of dependent steps
+/// and fewer instructions, for a second copy of the run-out in flash (docs/ground.md).
+/// Not on bare-metal targets without a hardware FPU (the micro:bit's Cortex-M0, whose
+/// golden-test image would outgrow its 256 KiB): one copy there.
 pub(crate) fn run_out<T: Real, H: Hopper<T>>(
     ground: &PreparedGround<T>,
     gravity: T,
@@ -186,14 +196,46 @@ pub(crate) fn run_out<T: Real, H: Hopper<T>>(
     hopper: &H,
     recorder: Option<&mut Recorder<'_, T>>,
 ) -> Result<Rollout<T>> {
+    #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
+    if ground.normal == Vector3::y() {
+        return run_out_on(
+            ground,
+            Level,
+            gravity,
+            launch_position,
+            first,
+            hopper,
+            recorder,
+        );
+    }
+    run_out_on(
+        ground,
+        ground.normal,
+        gravity,
+        launch_position,
+        first,
+        hopper,
+        recorder,
+    )
+}
+
+/// [`run_out`] on the plane of unit normal `n` (the ground's).
+fn run_out_on<T: Real, H: Hopper<T>, N: Normal<T>>(
+    ground: &PreparedGround<T>,
+    n: N,
+    gravity: T,
+    launch_position: &Vector3<T>,
+    first: &Contact<T>,
+    hopper: &H,
+    recorder: Option<&mut Recorder<'_, T>>,
+) -> Result<Rollout<T>> {
     let mut recorder = recorder;
-    let n = ground.normal;
     let plane = Plane {
-        normal: n,
+        normal: n.vector(),
         offset: n.dot(&first.position),
     };
     let g_vec = Vector3::new(T::zero(), -gravity, T::zero());
-    let g_n = gravity * n.y;
+    let g_n = gravity * n.vector().y;
     // A rebound rises v²/(2 g_n) above the plane: it hops if v² ≥ 2 g_n h_stop.
     let hop_speed_sq = lit::<T>(2.0 * STOP_HEIGHT_M) * g_n;
     let low_hop_speed_sq = lit::<T>(2.0 * LOW_HOP_HEIGHT_M) * g_n;
@@ -202,10 +244,10 @@ pub(crate) fn run_out<T: Real, H: Hopper<T>>(
     let mut at = *first;
     let mut bounces = 0_u32;
     let (roll_velocity, roll_spin) = loop {
-        let r = bounce::rebound(&at.velocity, &at.spin, &n, &ground.turf, ground.radius);
+        let r = bounce::rebound(&at.velocity, &at.spin, n, &ground.turf, ground.radius);
         let vn = r.normal_speed_mps;
         if !(vn > T::zero() && vn * vn >= hop_speed_sq) || bounces >= MAX_BOUNCES {
-            break (r.velocity_mps - n * vn, r.spin_radps);
+            break (r.velocity_mps - n.scaled(vn), r.spin_radps);
         }
         bounces += 1;
         let from = Contact {
@@ -214,7 +256,7 @@ pub(crate) fn run_out<T: Real, H: Hopper<T>>(
             ..at
         };
         let low = if vn * vn < low_hop_speed_sq {
-            low_hop(&from, &n, hopper, form, &mut stats, recorder.as_deref_mut())
+            low_hop(&from, n, hopper, form, &mut stats, recorder.as_deref_mut())
         } else {
             None
         };
@@ -223,7 +265,7 @@ pub(crate) fn run_out<T: Real, H: Hopper<T>>(
             None => hopper.hop(&from, plane, recorder.as_deref_mut(), &mut stats)?,
         };
         // Back onto the plane (the landing is on it to the root finder's accuracy).
-        at.position -= n * (n.dot(&at.position) - plane.offset);
+        at.position -= n.scaled(n.dot(&at.position) - plane.offset);
     };
     if !(roll_velocity.iter().all(|x| x.is_finite()) && roll_spin.iter().all(|x| x.is_finite())) {
         return Err(Error::Unstable);

@@ -27,6 +27,7 @@
 //! slope's pull is below the resistance at rest, `|g⃗_t| ≤ ρ₀ g_n`; on a steeper slope it
 //! rolls on until [`ROLL_TIME_CAP_S`].
 
+use super::normal::Normal;
 use crate::real::{Real, larger, length, lit, smaller, to_f64};
 use crate::trajectory::{Recorder, Sample};
 use nalgebra::Vector3;
@@ -47,8 +48,9 @@ pub(crate) struct RollEnd<T: Real> {
 }
 
 /// What a roll needs to know.
-pub(crate) struct Roll<'r, 'b, T: Real> {
-    pub(crate) normal: Vector3<T>,
+pub(crate) struct Roll<'r, 'b, T: Real, N: Normal<T>> {
+    /// The ground plane's unit normal.
+    pub(crate) normal: N,
     pub(crate) gravity: Vector3<T>,
     pub(crate) resistance: T,
     /// The grass drag's growth with speed `c` (s²/m²): the resistance is `ρ₀(1 + c v²)`.
@@ -61,7 +63,7 @@ pub(crate) struct Roll<'r, 'b, T: Real> {
     pub(crate) recorder: Option<&'r mut Recorder<'b, T>>,
 }
 
-impl<T: Real> Roll<'_, '_, T> {
+impl<T: Real, N: Normal<T>> Roll<'_, '_, T, N> {
     fn record(&mut self, time_since_start: T, position: Vector3<T>, velocity: Vector3<T>) {
         let spin = self.normal.cross(&velocity) / self.radius;
         self.record_spinning(time_since_start, position, velocity, spin);
@@ -134,14 +136,15 @@ impl<T: Real> Roll<'_, '_, T> {
         spin: &Vector3<T>,
     ) -> (Vector3<T>, Vector3<T>, T) {
         let n = self.normal;
-        let g_n = -self.gravity.dot(&n);
-        let g_t = self.gravity + n * g_n;
+        let g_n = -n.dot(&self.gravity);
+        let g_t = self.gravity + n.scaled(g_n);
         let r = self.radius;
-        let in_plane = |x: Vector3<T>| x - n * x.dot(&n);
-        let slip_of = |v: &Vector3<T>, w: &Vector3<T>| in_plane(v - w.cross(&n) * r);
+        let in_plane = |x: Vector3<T>| n.in_plane(&x);
+        // The spin's share of the slip, `(ω × n̂)·R` in the plane (the slip is `v − that`).
+        let spin_slip = |w: &Vector3<T>| in_plane(n.cross(w) * (-r));
         let grip = self.friction * g_n;
         let (mut p, mut v, mut w) = (p0, v0, *spin);
-        let mut slip = slip_of(&v, &w);
+        let mut slip = in_plane(v - spin_slip(&w));
         let h = lit::<T>(ROLL_STEP_S);
         let resist = self.resistance * g_n;
         let drag = resist * self.grass_drag;
@@ -149,27 +152,35 @@ impl<T: Real> Roll<'_, '_, T> {
         let mut t = T::zero();
         let steps = (ROLL_TIME_CAP_S / ROLL_STEP_S) as u32;
         for _ in 0..steps {
-            let size = length(&slip);
+            let size = n.norm_sq_in_plane(&slip).root();
             if !(size > T::zero() && grip > T::zero()) {
                 break;
             }
-            let dir = slip / size;
+            let dir = slip * (T::one() / size);
             // The slip closes at (7/2)μg_n less the slope's pull along it.
             let closing = lit::<T>(3.5) * grip - g_t.dot(&dir);
             if !(closing > T::zero()) {
                 break;
             }
-            // Friction for at most the step, stopping where the slip would reverse.
-            let dt = smaller(size / closing, h);
-            let v1 = v + (g_t - dir * grip) * dt;
-            let w1 = w + n.cross(&dir) * (spin_per_grip * grip * dt);
-            // The grass drag on the speed (never a gain, never a reversal).
-            let speed = length(&v1);
-            let speed1 = larger(speed - resist * dt, T::zero()) / (T::one() + drag * speed * dt);
-            let v1 = if speed > T::zero() {
-                v1 * (speed1 / speed)
+            // Friction for at most the step, stopping where the slip would reverse (the
+            // test by a product: the division only for the last, shorter step).
+            let dt = if size >= closing * h {
+                h
             } else {
-                v1
+                size / closing
+            };
+            // (The pull's share first: after `dir`, one multiply and one subtraction.)
+            let v1 = (v + g_t * dt) - dir * (grip * dt);
+            let w1 = w + n.cross(&dir) * (spin_per_grip * grip * dt);
+            // The grass drag on the speed (never a gain, never a reversal):
+            // `s' = max(s − A dt, 0)/(1 + B s dt)`, as the factor `s'/s` in one division.
+            let speed_sq = n.norm_sq_in_plane(&v1);
+            let speed = speed_sq.root();
+            let scale = larger(speed - resist * dt, T::zero()) / (speed + drag * dt * speed_sq);
+            let (v1, v1_in_plane) = if speed > T::zero() {
+                (v1 * scale, in_plane(v1) * scale)
+            } else {
+                (v1, in_plane(v1))
             };
             let p1 = p + (v + v1) * (dt * lit(0.5));
             let (pa, va, wa, ta) = (p, v, w, t);
@@ -190,10 +201,10 @@ impl<T: Real> Roll<'_, '_, T> {
                 }
             }
             p = p1;
-            v = in_plane(v1);
+            v = v1_in_plane;
             w = w1;
             t += dt;
-            slip = slip_of(&v, &w);
+            slip = v - spin_slip(&w);
             if dt < h {
                 break;
             }
@@ -215,7 +226,7 @@ impl<T: Real> Roll<'_, '_, T> {
 
     /// Rolls from `p0` with the in-plane velocity `v0`.
     fn roll(mut self, p0: Vector3<T>, v0: Vector3<T>, cap: T) -> RollEnd<T> {
-        let n = self.normal;
+        let n = self.normal.vector();
         let g_n = -self.gravity.dot(&n);
         let g_t = self.gravity + n * g_n;
         let five_sevenths = lit::<T>(5.0 / 7.0);
@@ -292,7 +303,8 @@ impl<T: Real> Roll<'_, '_, T> {
     ///
     /// (`B = 0`: `v = v₀ − Aτ`, `x = v₀τ − Aτ²/2`).
     fn level(mut self, p0: Vector3<T>, v0: Vector3<T>, resist: T, cap: T) -> RollEnd<T> {
-        let u = length(&v0);
+        let u_sq = v0.norm_squared();
+        let u = u_sq.root();
         if !(u > T::zero()) {
             self.record(T::zero(), p0, Vector3::zeros());
             return RollEnd {
@@ -309,14 +321,16 @@ impl<T: Real> Roll<'_, '_, T> {
         let root_c = c.root();
         let w = u * root_c;
         let k = resist * root_c;
-        let theta0 = crate::geometry::atan2_first_quadrant(w, T::one());
+        // θ₀ and the stop from w² = c·u² (not waiting on the square root of u²).
+        let w_sq = c * u_sq;
+        let theta0 = crate::geometry::atan2_first_quadrant_of_squares(w_sq, T::one());
         let stop = theta0 / k;
-        // x = ln(1 + w²)/(2Ac); for a huge w as 2 ln w (no overflow of w²).
+        // x = ln(1 + w²)/(2Ac); for a huge w as ln w² (ln_1p's series is for moderate w²).
         let per_b = T::one() / (resist * c);
-        let full = if w < lit(1.0e4) {
-            (w * w).ln_1p()
+        let full = if w_sq < lit(1.0e8) {
+            w_sq.ln_1p()
         } else {
-            w.ln() * lit(2.0)
+            w_sq.ln()
         } * (per_b * lit(0.5));
         let state = move |tau: T| {
             let (sn, cs) = (theta0 - k * tau).sin_cos();
