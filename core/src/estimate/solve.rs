@@ -500,30 +500,37 @@ fn valley<T: Real>(
     let c0 = problem.cost(r, x);
     let probe = lit::<T>(PROBE);
     let far = lit::<T>(FAR);
-    // one side probed at `t` (signed) from `x` along `start`: its width and direction
-    let side = |start: V7<T>, t: T| -> Option<(T, V7<T>)> {
-        let (xp, cp) = relax(problem, x + start * t)?;
-        let dc = crate::real::larger(cp - c0, t * t / (far * far));
-        Some((t.abs() / dc.root(), (xp - x) / t))
-    };
     // per side: the profile's Gaussian width σ± (in Laplace σ) and the valley's direction
     // d± (the delivery per unit t)
     let mut sides = [(T::one(), s), (T::one(), s)];
     for ((width, dir), sign) in sides.iter_mut().zip([T::one(), -T::one()]) {
-        let Some((near, d_near)) = side(s, sign * probe) else {
-            continue;
-        };
-        (*width, *dir) = (near, d_near);
-        if near > probe {
-            // a side wider than the probe is probed again at twice its width, farther along
-            // the valley, and that estimate blended in as the first width grows from
-            // `PROBE` to `PROBE·(1 + BLEND)`: the summary stays continuous in the data
-            let t = crate::real::smaller(near + near, far);
-            if let Some((wide, d_wide)) = side(d_near, sign * t) {
-                let blend = crate::real::smaller((near - probe) / (probe * lit(BLEND)), T::one());
-                *width = near + (wide - near) * blend;
-                *dir = d_near + (d_wide - d_near) * blend;
+        let mut t = probe;
+        let mut start = s;
+        // the first probe's width and direction, once it asks for a second
+        let mut near: Option<(T, V7<T>)> = None;
+        // one call site of `relax` (its frame is large: the micro:bit's stack holds one)
+        for _ in 0..2 {
+            let Some((xp, cp)) = relax(problem, x + start * (sign * t)) else {
+                break;
+            };
+            let dc = crate::real::larger(cp - c0, t * t / (far * far));
+            let (w, d) = (t / dc.root(), (xp - x) / (sign * t));
+            if let Some((w_near, d_near)) = near {
+                // a side wider than the probe is probed again at twice its width, farther
+                // along the valley, and that estimate blended in as the first width grows
+                // from `PROBE` to `PROBE·(1 + BLEND)`: the summary stays continuous in the data
+                let blend = crate::real::smaller((w_near - probe) / (probe * lit(BLEND)), T::one());
+                *width = w_near + (w - w_near) * blend;
+                *dir = d_near + (d - d_near) * blend;
+                break;
             }
+            (*width, *dir) = (w, d);
+            if !(w > probe) {
+                break;
+            }
+            near = Some((w, d));
+            t = crate::real::smaller(w + w, far);
+            start = d;
         }
     }
     let [(up, du), (down, dd)] = sides;
