@@ -212,7 +212,11 @@ pub(crate) fn low_hop<T: Real, H: Hopper<T>, N: Normal<T>>(
                 tau -= g / dg;
             }
         }
-        if !(tau > T::zero() && tau.is_finite()) {
+        // A low hop lands near the parabola's τ₁; one whose quadratic force model puts the
+        // landing past 2τ₁ is not low (a lift that nearly holds the ball up, a strong wind
+        // profile): the model would be extrapolated far past its three points, and the
+        // integrator takes the hop instead.
+        if !(tau > T::zero() && tau.is_finite() && tau <= two * t1) {
             return None;
         }
         (j, spin_jerk, Some(q), tau)
