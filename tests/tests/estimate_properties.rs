@@ -197,7 +197,7 @@ proptest! {
         // Jacobian resolves the weakest direction (path against toe) to about 0.05 σ, and the
         // posterior mean along the strike height's valley (profile probes relaxed on f32
         // finite differences) to 0.3 σ in all but about 1 in 10⁴ shots (worst 0.43 σ in
-        // 64,000 random shots: docs/estimate.md §5)
+        // 64,000 random shots: docs/estimate.md §4)
         for ((x, y), s) in a.value.to_array().iter().zip(b.value.to_array()).zip(a.sd.to_array()) {
             prop_assert!((x - to_f64(y)).abs() <= 0.5 * s + 1e-6, "{:?}", a.value.to_array().iter().zip(b.value.to_array()).zip(a.sd.to_array()).map(|((x, y), s)| (x - to_f64(y)) / s).collect::<Vec<_>>());
         }

@@ -418,7 +418,7 @@ fn jacobian<T: Real>(
 /// ones, lost the calibration: docs/estimate.md §4), and the ramp over which the second
 /// probe's width is blended in, as a fraction of the first probe: from `PROBE` to
 /// `PROBE·(1 + BLEND)` (a switch at `PROBE` made f32 and f64 differ by up to 1.3σ;
-/// docs/estimate.md §5).
+/// docs/estimate.md §4).
 const PROBE: f64 = 1.5;
 const FAR: f64 = 10.0;
 const RELAX: usize = 2;
