@@ -107,18 +107,7 @@ const ATAN_A: [f64; 8] = [
 #[inline]
 #[must_use]
 pub fn atan2_first_quadrant<T: Real>(y: T, x: T) -> T {
-    let steep = y > x;
-    let (num, den) = if steep { (x, y) } else { (y, x) };
-    if !(den > T::zero()) {
-        return if num.partial_cmp(&den).is_none() {
-            num + den
-        } else {
-            T::zero()
-        };
-    }
-    let z = num / den;
-    let angle = z * atan_over_z(z * z);
-    if steep { T::frac_pi_2() - angle } else { angle }
+    reflected(y, x, |z| z * atan_over_z(z * z))
 }
 
 /// [`atan2_first_quadrant`] of `y, x ≥ 0` from their squares `y²`, `x²` (same polynomial,
@@ -130,8 +119,17 @@ pub fn atan2_first_quadrant<T: Real>(y: T, x: T) -> T {
 #[inline]
 #[must_use]
 pub(crate) fn atan2_first_quadrant_of_squares<T: Real>(y_sq: T, x_sq: T) -> T {
-    let steep = y_sq > x_sq;
-    let (num, den) = if steep { (x_sq, y_sq) } else { (y_sq, x_sq) };
+    // y² > x² exactly when y > x for y, x ≥ 0: the same reflection on the squares
+    reflected(y_sq, x_sq, |z_sq| z_sq.root() * atan_over_z(z_sq))
+}
+
+/// The first quadrant's angle of `(a, b)` (both `y, x` or both their squares): `angle` of
+/// the ratio `min/max`, reflected through `π/2 − angle` when `a > b`; `0` for `(0, 0)`, NaN
+/// in, NaN out.
+#[inline(always)]
+fn reflected<T: Real>(a: T, b: T, angle: impl Fn(T) -> T) -> T {
+    let steep = a > b;
+    let (num, den) = if steep { (b, a) } else { (a, b) };
     if !(den > T::zero()) {
         return if num.partial_cmp(&den).is_none() {
             num + den
@@ -139,8 +137,7 @@ pub(crate) fn atan2_first_quadrant_of_squares<T: Real>(y_sq: T, x_sq: T) -> T {
             T::zero()
         };
     }
-    let z_sq = num / den;
-    let angle = z_sq.root() * atan_over_z(z_sq);
+    let angle = angle(num / den);
     if steep { T::frac_pi_2() - angle } else { angle }
 }
 
