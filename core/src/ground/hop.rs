@@ -181,6 +181,7 @@ pub(crate) fn low_hop<T: Real, H: Hopper<T>, N: Normal<T>>(
     };
     let (j, spin_jerk, q, tau) = if form == HopForces::Held {
         let (j, spin_jerk) = hopper.rates_held(&f0, &axis, Some(spin0_sq));
+        // (The quadratic's root is never past 2τ₀, or there is none: no guard needed.)
         (j, spin_jerk, None, hop_landing(vn, an, n.dot(&j))?)
     } else {
         // τ₁ and 1/τ₁ side by side (two divisions, neither waiting on the other).

@@ -323,12 +323,18 @@ mod tests {
     }
 
     /// The series landing against the quadratic's closed-form root, across and beyond the
-    /// series' range (a low hop's x ≈ 0.01), and no root where there is none.
+    /// series' range (a low hop's x ≈ 0.01), and no root where there is none. Never past
+    /// twice the parabola's `τ₀` (`y = 1 + xy²` has a root only for `x ≤ 1/4`, and there
+    /// `y ≤ 2`): the held form's landing needs no guard against running away.
     #[test]
     fn hop_landing_is_the_quadratics_root() {
         for vn in [0.05, 0.7, 2.6, 4.4] {
             for an in [-14.0, -9.8, -6.0] {
-                for jn in [-40.0, -3.0, -0.5, 0.0, 0.2, 1.0, 6.0] {
+                let tau0 = -2.0 * vn / an;
+                // x = jn·τ₀/(−3an) at 0.2499 and 0.2501: the last root and none.
+                let edge = -3.0 * an / tau0 * 0.2499;
+                let beyond = -3.0 * an / tau0 * 0.2501;
+                for jn in [-40.0, -3.0, -0.5, 0.0, 0.2, 1.0, 6.0, edge, beyond] {
                     let exact = {
                         let b = 0.5 * an;
                         let disc: f64 = b * b - jn * (2.0 / 3.0) * vn;
@@ -340,6 +346,7 @@ mod tests {
                             assert!((t - e).abs() <= 2e-7 * e, "{vn} {an} {jn}: {t} {e}");
                             let g = vn + an * t / 2.0 + jn * t * t / 6.0;
                             assert!(g.abs() <= 1e-6 * vn, "{vn} {an} {jn}: residual {g}");
+                            assert!(t <= 2.0 * tau0, "{vn} {an} {jn}: {t} past 2τ₀ {tau0}");
                         }
                         (None, None) => {}
                         other => panic!("{vn} {an} {jn}: {other:?}"),
