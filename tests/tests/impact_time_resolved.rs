@@ -8,7 +8,10 @@
 //! from the horizontal one (across it)? And does the face's turn during the contact matter
 //! (the face held as at first touch, or turning with the head)? Prints the spin per mm of
 //! strike height, the sidespin per mm toward the toe and their ratio, to compare with the
-//! inertia ratio Iyy/Izz, and the launch and start-line responses.
+//! inertia ratio Iyy/Izz, and the launch and start-line responses. A third face ("at max
+//! compression") is held as the turning face stands at maximum compression: TrackMan's
+//! dynamic loft and face angle are the face's "at the time of maximum compression"
+//! (TrackMan's parameter definitions), so a model fed them holds that face.
 //!
 //! `cargo test -p carry-tests --test impact_time_resolved -- --ignored --nocapture`
 
@@ -27,13 +30,26 @@ struct Out {
     spin: Vector3<f64>,
     velocity: Vector3<f64>,
     slip_s: f64,
+    /// The head's rotation since first touch at maximum compression (rad, small angles).
+    turn_at_max_compression: Vector3<f64>,
+}
+
+/// How the face moves during the contact.
+#[derive(Clone, Copy)]
+enum Face {
+    /// Held as at first touch.
+    Held,
+    /// Turning with the head.
+    Turns,
+    /// Held, turned by this small rotation from first touch (rad).
+    HeldTurned(Vector3<f64>),
 }
 
 /// One strike `h` up and `z` toward the toe; `r` the tangential/normal frequency ratio, `mu`
-/// the friction coefficient; `turning`: the face turns with the head during the contact
-/// (its normal and the contact point's lever rotate by the head's small rotation angle),
-/// else both stay as at first touch.
-fn strike(h: f64, z: f64, r: f64, mu: f64, turning: bool) -> Out {
+/// the friction coefficient; `face`: held, or turning with the head during the contact (its
+/// normal and the contact point's lever rotate by the head's small rotation angle), or held
+/// at a given turn.
+fn strike(h: f64, z: f64, r: f64, mu: f64, face: Face) -> Out {
     let (tau, e, dt): (f64, f64, f64) = (0.45e-3, 0.8, 1e-8);
     let ib = 0.4 * BALL_KG * BALL_M * BALL_M;
     let n0 = Vector3::x();
@@ -44,6 +60,7 @@ fn strike(h: f64, z: f64, r: f64, mu: f64, turning: bool) -> Out {
     let rc0 = Vector3::new(CG_DEPTH_M, h, z);
     // the head's rotation since first touch (small angles)
     let mut turn = Vector3::<f64>::zeros();
+    let mut turn_at_max_compression = Vector3::<f64>::zeros();
     let mn = 1.0 / (1.0 / BALL_KG + 1.0 / HEAD_KG);
     let kn = mn * (std::f64::consts::PI / tau).powi(2);
     let zeta = -e.ln() / (std::f64::consts::PI.powi(2) + e.ln().powi(2)).sqrt();
@@ -53,14 +70,19 @@ fn strike(h: f64, z: f64, r: f64, mu: f64, turning: bool) -> Out {
     let (mut dn, mut xi, mut t, mut slip_s, mut started) =
         (0.0, Vector3::<f64>::zeros(), 0.0, 0.0, false);
     while t < 5.0 * tau {
-        let (n, rc) = if turning {
-            ((n0 + turn.cross(&n0)).normalize(), rc0 + turn.cross(&rc0))
-        } else {
-            (n0, rc0)
+        let rotated =
+            |turn: &Vector3<f64>| ((n0 + turn.cross(&n0)).normalize(), rc0 + turn.cross(&rc0));
+        let (n, rc) = match face {
+            Face::Held => (n0, rc0),
+            Face::Turns => rotated(&turn),
+            Face::HeldTurned(fixed) => rotated(&fixed),
         };
         let rb = -n * BALL_M;
         let u = (vb + wb.cross(&rb)) - (vc + wc.cross(&rc));
         let dnd = -u.dot(&n);
+        if started && dnd <= 0.0 && turn_at_max_compression == Vector3::zeros() {
+            turn_at_max_compression = turn;
+        }
         dn += dnd * dt;
         xi += (u - n * u.dot(&n)) * dt;
         // the tangential spring stays in the (turning) contact plane
@@ -98,6 +120,7 @@ fn strike(h: f64, z: f64, r: f64, mu: f64, turning: bool) -> Out {
         spin: wb,
         velocity: vb,
         slip_s,
+        turn_at_max_compression,
     }
 }
 
@@ -106,9 +129,9 @@ fn strike(h: f64, z: f64, r: f64, mu: f64, turning: bool) -> Out {
 fn vertical_and_horizontal_gear_effect_through_the_contact() {
     let rpm = 60.0 / std::f64::consts::TAU;
     println!(
-        "| r | μ | face | centre spin rpm | slip ms | vertical rpm/mm (%/mm) | sidespin rpm/mm | vertical/horizontal | launch °/mm up | start °/mm toe |"
+        "| r | μ | face | centre spin rpm | slip ms | vertical rpm/mm (%/mm) | sidespin rpm/mm | vertical/horizontal | launch °/mm up | start °/mm toe | turn at max compression, 10 mm up (°) |"
     );
-    println!("|---|---|---|---|---|---|---|---|---|---|");
+    println!("|---|---|---|---|---|---|---|---|---|---|---|");
     for (r, mu) in [
         (0.506, 0.4),
         (0.506, 0.2),
@@ -116,16 +139,28 @@ fn vertical_and_horizontal_gear_effect_through_the_contact() {
         (1.4, 0.4),
         (1.4, 0.15),
     ] {
-        for turning in [false, true] {
-            let c = strike(0.0, 0.0, r, mu, turning);
-            let (up, down) = (
-                strike(0.01, 0.0, r, mu, turning),
-                strike(-0.01, 0.0, r, mu, turning),
-            );
-            let (toe, heel) = (
-                strike(0.0, 0.01, r, mu, turning),
-                strike(0.0, -0.01, r, mu, turning),
-            );
+        // The face at maximum compression of each strike, from the turning face's run.
+        let at_max = |h: f64, z: f64| {
+            Face::HeldTurned(strike(h, z, r, mu, Face::Turns).turn_at_max_compression)
+        };
+        let faces: [(&str, [Face; 5]); 3] = [
+            ("held", [Face::Held; 5]),
+            ("turns", [Face::Turns; 5]),
+            (
+                "at max compression",
+                [
+                    at_max(0.0, 0.0),
+                    at_max(0.01, 0.0),
+                    at_max(-0.01, 0.0),
+                    at_max(0.0, 0.01),
+                    at_max(0.0, -0.01),
+                ],
+            ),
+        ];
+        for (name, [fc, fu, fd, ft, fh]) in faces {
+            let c = strike(0.0, 0.0, r, mu, fc);
+            let (up, down) = (strike(0.01, 0.0, r, mu, fu), strike(-0.01, 0.0, r, mu, fd));
+            let (toe, heel) = (strike(0.0, 0.01, r, mu, ft), strike(0.0, -0.01, r, mu, fh));
             let centre = c.spin.norm() * rpm;
             let vertical = (up.spin.norm() - down.spin.norm()) * rpm / 20.0;
             let side = (toe.spin.y - heel.spin.y) * rpm / 20.0;
@@ -133,12 +168,12 @@ fn vertical_and_horizontal_gear_effect_through_the_contact() {
             let elevation = |o: &Out| o.velocity.y.atan2(o.velocity.x).to_degrees();
             let azimuth = |o: &Out| o.velocity.z.atan2(o.velocity.x).to_degrees();
             println!(
-                "| {r} | {mu} | {} | {centre:.0} | {:.3} | {vertical:+.1} ({:+.2}) | {side:+.1} | {ratio:.2} | {:+.3} | {:+.3} |",
-                if turning { "turns" } else { "held" },
+                "| {r} | {mu} | {name} | {centre:.0} | {:.3} | {vertical:+.1} ({:+.2}) | {side:+.1} | {ratio:.2} | {:+.3} | {:+.3} | {:.3} |",
                 c.slip_s * 1e3,
                 vertical / centre * 100.0,
                 (elevation(&up) - elevation(&down)) / 20.0,
                 (azimuth(&toe) - azimuth(&heel)) / 20.0,
+                up.turn_at_max_compression.norm().to_degrees(),
             );
             assert!(centre.is_finite() && ratio.is_finite());
         }
