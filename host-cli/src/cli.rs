@@ -134,7 +134,8 @@ pub struct DeliveryArgs {
     #[arg(long, value_name = "X,Y,Z", value_parser = vec3, allow_hyphen_values = true)]
     pub club_spin: Option<[f64; 3]>,
     /// Impact point up the face from its centre [m | in] (default 0, or the named club's
-    /// typical: drivers 4 mm above centre, irons where a ball on turf meets the face).
+    /// typical: the driver 12 mm above centre (7 mm above its sweet spot), fairway woods and
+    /// hybrids 2 mm below, irons and wedges where a ball on turf meets the face).
     #[arg(long, value_name = "LEN", value_parser = finite, allow_hyphen_values = true)]
     pub impact_height: Option<f64>,
     /// Impact point toward the toe from the face centre [m | in] (default 0; − = heel).
