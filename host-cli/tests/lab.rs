@@ -113,6 +113,61 @@ fn optimize_csv_chart_and_svg() {
     let cells = v["cells"].as_array().cloned().unwrap_or_default();
     assert_eq!(cells.len(), 2);
     assert!(num(&cells[1]["carry_m"]) > num(&cells[0]["carry_m"]));
+    assert!(cells[0].get("total_m").is_none(), "no ground, no total");
+    // The chart of the total (with a ground): each cell's total beyond its carry, and at
+    // least the total of the carry chart's loft; its text table gains roll and total.
+    let total = json(&[
+        "optimize",
+        "--chart",
+        "--objective",
+        "total",
+        "--ground",
+        "fairway",
+        "--club-speeds",
+        "40,45,5",
+        "--attack-angles",
+        "0,0,1",
+        "--json",
+    ]);
+    let carry = json(&[
+        "optimize",
+        "--chart",
+        "--ground",
+        "fairway",
+        "--club-speeds",
+        "40,45,5",
+        "--attack-angles",
+        "0,0,1",
+        "--json",
+    ]);
+    let (t, c) = (
+        total["cells"].as_array().cloned().unwrap_or_default(),
+        carry["cells"].as_array().cloned().unwrap_or_default(),
+    );
+    assert_eq!((t.len(), c.len()), (2, 2));
+    for (t, c) in t.iter().zip(&c) {
+        assert!(num(&t["total_m"]) > num(&t["carry_m"]), "{t}");
+        assert!(num(&t["total_m"]) >= num(&c["total_m"]) - 1e-3, "{t} {c}");
+        assert!(num(&c["carry_m"]) >= num(&t["carry_m"]) - 1e-3, "{t} {c}");
+    }
+    let r = run(&[
+        "optimize",
+        "--chart",
+        "--objective",
+        "total",
+        "--ground",
+        "fairway",
+        "--club-speeds",
+        "45,45,5",
+        "--attack-angles",
+        "0,0,1",
+    ]);
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    assert!(
+        r.stdout.lines().next().unwrap_or("").contains("total"),
+        "{}",
+        r.stdout
+    );
 }
 
 #[test]
@@ -262,6 +317,21 @@ fn bad_input_is_one_line_and_status_2() {
     );
     rejects(&["optimize", "--objective", "total"], "--objective");
     rejects(&["optimize", "--objective", "dispersion"], "--objective");
+    rejects(
+        &["optimize", "--chart", "--objective", "total"],
+        "--objective",
+    );
+    rejects(
+        &[
+            "optimize",
+            "--chart",
+            "--objective",
+            "dispersion",
+            "--face-angle-sd",
+            "1",
+        ],
+        "--objective",
+    );
     rejects(&["optimize", "--starts", "0"], "--starts");
     rejects(&["dispersion", "--face-angle-sd", "-1"], "--face-angle-sd");
     rejects(&["dispersion", "--shots", "1"], "--shots");

@@ -10,7 +10,7 @@ use carry_core::real::{lit, to_f64};
 use carry_core::units::{deg, rpm, to_deg, to_rpm};
 use carry_core::{
     Ball, BallMotion, ClubHead, ClubSpec, Delivery, FlightOutcome, Launch, LaunchMetrics,
-    PreparedScene, Real, RunEnd,
+    PreparedScene, Real,
 };
 
 use nalgebra::{Matrix3, Vector3};
@@ -381,14 +381,7 @@ fn flight_report<T: Real>(f: &FlightOutcome<T>) -> FlightReport {
         air_density_kgm3: to_f64(f.air_density_kgm3),
         steps: f.stats.steps,
         rejected_steps: f.stats.rejected_steps,
-        ground: f.ground.map(|g| GroundReport {
-            total_m: to_f64(g.total_m),
-            roll_m: to_f64(g.roll_m),
-            bounces: g.bounces,
-            rest_position_m: f3(&g.rest_position_m),
-            time_to_rest_s: to_f64(g.time_to_rest_s),
-            still_rolling: g.end == RunEnd::StillRolling,
-        }),
+        ground: f.ground.as_ref().map(GroundReport::of),
     }
 }
 

@@ -2,6 +2,7 @@
 //! [`visit_fields`]). The launch-monitor table for people is the CLI's.
 
 use crate::compute::Mode;
+use carry_core::ground::{Rollout, RunEnd};
 use carry_core::real::to_f64;
 use carry_core::units::{to_deg, to_rpm};
 use carry_core::{LaunchMetrics, Real};
@@ -122,6 +123,22 @@ pub struct GroundReport {
     /// The ball was still rolling at the roll time cap (a slope steeper than the
     /// surface's rolling resistance): "rest" is where it was then.
     pub still_rolling: bool,
+}
+
+impl GroundReport {
+    /// The report of a core run-out (the CLI's `flight` keys, the lab's shot summaries).
+    #[must_use]
+    pub fn of<T: Real>(g: &Rollout<T>) -> Self {
+        let p = &g.rest_position_m;
+        Self {
+            total_m: to_f64(g.total_m),
+            roll_m: to_f64(g.roll_m),
+            bounces: g.bounces,
+            rest_position_m: [to_f64(p.x), to_f64(p.y), to_f64(p.z)],
+            time_to_rest_s: to_f64(g.time_to_rest_s),
+            still_rolling: g.end == RunEnd::StillRolling,
+        }
+    }
 }
 
 /// One result: impact, flight or both.

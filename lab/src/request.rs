@@ -11,7 +11,9 @@
 
 use crate::dispersion::{self, Dispersion, Noise};
 use crate::normalize::{self, Direction, Normalized};
-use crate::optimize::{self, Chart, ChartOptions, Objective, Optimum, Options, Range};
+use crate::optimize::{
+    self, Chart, ChartObjective, ChartOptions, Objective, Optimum, Options, Range,
+};
 use crate::sweep::generate::{EXAMPLE_COMMENT, SwingModel};
 use crate::sweep::{self, Motion, Sweep};
 use crate::{Error, Input, Setup};
@@ -444,12 +446,26 @@ impl OptimizeRequest {
                     "the chart searches the dynamic loft",
                 ));
             }
+            let objective = match self.objective {
+                ObjectiveChoice::Carry => ChartObjective::Carry,
+                ObjectiveChoice::Total => ChartObjective::Total,
+                ObjectiveChoice::Dispersion => {
+                    return Err(failure(
+                        Error::invalid(
+                            Input::Objective,
+                            "the chart maximises carry or total, not dispersion",
+                        ),
+                        "starts",
+                    ));
+                }
+            };
             let chart = optimize::chart(
                 &setup,
                 &ChartOptions {
                     club_speeds_mps: speeds,
                     attack_angles_deg: attacks,
                     dynamic_loft_deg: loft,
+                    objective,
                 },
             )
             .map_err(|e| failure(e, "starts"))?;

@@ -9,7 +9,7 @@ use carry_core::units::to_deg;
 use carry_core::{
     Ball, ClubHead, Delivery, DeliveryConvention, PreparedScene, Preset, Real, Scene,
 };
-use carry_io::report::LaunchFigures;
+use carry_io::report::{GroundReport, LaunchFigures};
 use serde::Serialize;
 
 /// Everything a shot needs besides the delivery, plus the base delivery.
@@ -48,6 +48,9 @@ pub struct ShotSummary {
     pub apex_m: f64,
     /// Landing angle (deg below the horizontal).
     pub land_angle_deg: f64,
+    /// Bounce and roll to rest (total, roll, …), only with a ground in the scene.
+    #[serde(flatten, skip_serializing_if = "Option::is_none")]
+    pub ground: Option<GroundReport>,
 }
 
 impl ShotSummary {
@@ -64,6 +67,7 @@ impl ShotSummary {
             carry_x_m: to_f64(f.carry_x_m),
             apex_m: to_f64(f.apex_m),
             land_angle_deg: to_f64(to_deg(f.landing_angle_rad)),
+            ground: f.ground.as_ref().map(GroundReport::of),
         }
     }
 }

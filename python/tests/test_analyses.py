@@ -24,6 +24,15 @@ def test_optimize_matches_cli(cli):
     assert 18 <= got["dynamic_loft_deg"] <= 30
 
 
+def test_total_chart_matches_cli(cli):
+    got = carry.optimize(chart=True, objective="total", ground="fairway",
+                         club_speeds=(40, 45, 5), attack_angles=(0, 0, 1))
+    expected = cli_json(cli, "optimize", "--chart", "--objective", "total", "--ground",
+                        "fairway", "--club-speeds", "40,45,5", "--attack-angles", "0,0,1")
+    assert got == expected
+    assert all(c["total_m"] > c["carry_m"] for c in got["cells"])
+
+
 def test_dispersion_matches_cli_and_zero_noise_is_the_shot(cli):
     got = carry.dispersion(club="driver", face_angle_sd=2.0, shots=300, seed=7)
     expected = cli_json(cli, "dispersion", "--club", "driver", "--face-angle-sd", "2",
@@ -49,6 +58,7 @@ def test_sweep_and_normalize_match_cli(cli):
     (lambda: carry.normalize(no_such_option=1), "--no-such-option"),
     (lambda: carry.sweep(ball_positions="a,b"), "--ball-positions"),
     (lambda: carry.optimize(starts=float("nan")), "starts"),
+    (lambda: carry.optimize(chart=True, objective="total"), "objective"),
 ])
 def test_bad_input_is_a_value_error_naming_the_option(call, option):
     with pytest.raises(ValueError, match=option):

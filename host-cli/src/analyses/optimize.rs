@@ -194,6 +194,12 @@ fn table(o: &Optimum, u: Units) -> String {
     let _ = writeln!(s, "  spin              {:8.0} rpm", o.shot.launch.spin_rpm);
     let _ = writeln!(s, "  carry             {carry:8.2} {cu}");
     let _ = writeln!(s, "  side              {side:8.2} {cu}");
+    if let Some(g) = &o.shot.ground {
+        let (roll, _) = u.display(Quantity::Long, g.roll_m);
+        let (total, _) = u.display(Quantity::Long, g.total_m);
+        let _ = writeln!(s, "  roll              {roll:8.2} {cu}");
+        let _ = writeln!(s, "  total             {total:8.2} {cu}");
+    }
     if o.objective == "dispersion" {
         let (v, vu) = u.display(Quantity::Long, o.objective_value);
         let _ = writeln!(s, "  side spread (SD)  {v:8.3} {vu}");
@@ -234,7 +240,9 @@ fn chart_table(c: &Chart, u: Units) -> String {
     let mut s = String::new();
     let (_, su) = u.display(Quantity::Speed, 1.0);
     let (_, cu) = u.display(Quantity::Long, 1.0);
-    let _ = writeln!(
+    // Total and roll columns only with a ground in the scene.
+    let ground = c.cells.iter().any(|cell| cell.shot.ground.is_some());
+    let _ = write!(
         s,
         "{:>11} {:>8} {:>9} {:>10} {:>8} {:>7} {:>8}",
         format!("club {su}"),
@@ -245,8 +253,17 @@ fn chart_table(c: &Chart, u: Units) -> String {
         "spin",
         format!("carry {cu}")
     );
+    if ground {
+        let _ = write!(
+            s,
+            " {:>8} {:>8}",
+            format!("roll {cu}"),
+            format!("total {cu}")
+        );
+    }
+    s.push('\n');
     for cell in &c.cells {
-        let _ = writeln!(
+        let _ = write!(
             s,
             "{:>11.1} {:>8.1} {:>9.1} {:>10.1} {:>8.1} {:>7.0} {:>8.1}",
             u.to_display(Quantity::Speed, cell.club_speed_mps),
@@ -257,6 +274,15 @@ fn chart_table(c: &Chart, u: Units) -> String {
             cell.shot.launch.spin_rpm,
             u.to_display(Quantity::Long, cell.shot.carry_m)
         );
+        if let Some(g) = &cell.shot.ground {
+            let _ = write!(
+                s,
+                " {:>8.1} {:>8.1}",
+                u.to_display(Quantity::Long, g.roll_m),
+                u.to_display(Quantity::Long, g.total_m)
+            );
+        }
+        s.push('\n');
     }
     s
 }

@@ -1,5 +1,6 @@
 //! The optimizer chart (after TrackMan's): for each club speed × attack angle, the
-//! dynamic loft that maximises carry, and the launch and carry it gives.
+//! dynamic loft that maximises carry (or, with a ground in the scene, the total), and the
+//! launch, carry and total it gives.
 //!
 //! Each cell is a bounded one-dimensional maximisation over dynamic loft by argmin's Brent
 //! method (Brent 1973, *Algorithms for Minimization without Derivatives*, ch. 5: golden
@@ -28,6 +29,18 @@ pub struct ChartOptions {
     pub attack_angles_deg: Vec<f64>,
     /// Dynamic loft bounds (deg).
     pub dynamic_loft_deg: Range,
+    /// What each cell maximises.
+    pub objective: ChartObjective,
+}
+
+/// What the chart's cells maximise.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum ChartObjective {
+    /// Carry (TrackMan's optimizer chart).
+    #[default]
+    Carry,
+    /// Total, carry plus bounce and roll: needs a ground in the scene.
+    Total,
 }
 
 /// One cell: the best dynamic loft at a club speed and attack angle.
@@ -57,6 +70,7 @@ pub struct Chart {
 
 struct LoftCost<'a, T: Real> {
     setup: &'a Setup<T>,
+    objective: ChartObjective,
 }
 
 impl<T: Real> CostFunction for LoftCost<'_, T> {
@@ -65,19 +79,34 @@ impl<T: Real> CostFunction for LoftCost<'_, T> {
     fn cost(&self, loft_deg: &f64) -> std::result::Result<f64, argmin::core::Error> {
         let mut d = self.setup.delivery;
         d.dynamic_loft_rad = deg(lit(*loft_deg));
-        Ok(match self.setup.play(&d) {
-            Ok(out) => -to_f64(out.flight.carry_m),
-            Err(_) => f64::MAX,
-        })
+        let gain = self
+            .setup
+            .play(&d)
+            .ok()
+            .and_then(|out| match self.objective {
+                ChartObjective::Carry => Some(out.flight.carry_m),
+                ChartObjective::Total => out.flight.ground.map(|g| g.total_m),
+            });
+        Ok(gain.map_or(f64::MAX, |m| -to_f64(m)))
     }
 }
 
-fn cell<T: Real>(base: &Setup<T>, speed: f64, attack: f64, loft: Range) -> Result<ChartCell> {
+fn cell<T: Real>(
+    base: &Setup<T>,
+    speed: f64,
+    attack: f64,
+    loft: Range,
+    objective: ChartObjective,
+) -> Result<ChartCell> {
     let mut setup = *base;
     setup.delivery.club_speed_mps = lit(speed);
     setup.delivery.attack_angle_rad = deg(lit(attack));
     let solver = BrentOpt::new(loft.lo, loft.hi).set_tolerance(1e-10, LOFT_TOLERANCE_DEG);
-    let result = Executor::new(LoftCost { setup: &setup }, solver)
+    let cost = LoftCost {
+        setup: &setup,
+        objective,
+    };
+    let result = Executor::new(cost, solver)
         .configure(|s| s.param(0.5 * (loft.lo + loft.hi)).max_iters(200))
         .run()
         .map_err(|e| Error::Library(e.to_string()))?;
@@ -99,8 +128,8 @@ fn cell<T: Real>(base: &Setup<T>, speed: f64, attack: f64, loft: Range) -> Resul
 /// Computes the optimizer chart.
 ///
 /// # Errors
-/// [`Error::Invalid`] for an empty grid or a non-finite or negative speed; the core's
-/// errors when the best shot of a cell fails.
+/// [`Error::Invalid`] for an empty grid, a non-finite or negative speed, or the total
+/// without a ground in the scene; the core's errors when the best shot of a cell fails.
 pub fn chart<T: Real>(setup: &Setup<T>, options: &ChartOptions) -> Result<Chart> {
     if options.club_speeds_mps.is_empty()
         || options
@@ -121,6 +150,12 @@ pub fn chart<T: Real>(setup: &Setup<T>, options: &ChartOptions) -> Result<Chart>
             "need one or more finite attack angles",
         ));
     }
+    if options.objective == ChartObjective::Total && setup.scene.ground().is_none() {
+        return Err(Error::invalid(
+            Input::Objective,
+            "total distance needs a ground (e.g. --ground fairway) to bounce and roll on",
+        ));
+    }
     let grid: Vec<(f64, f64)> = options
         .club_speeds_mps
         .iter()
@@ -128,7 +163,7 @@ pub fn chart<T: Real>(setup: &Setup<T>, options: &ChartOptions) -> Result<Chart>
         .collect();
     let cells = grid
         .par_iter()
-        .map(|&(v, a)| cell(setup, v, a, options.dynamic_loft_deg))
+        .map(|&(v, a)| cell(setup, v, a, options.dynamic_loft_deg, options.objective))
         .collect::<Result<Vec<_>>>()?;
     Ok(Chart {
         club_speeds_mps: options.club_speeds_mps.clone(),

@@ -24,7 +24,7 @@ mod chart;
 mod heatmap;
 mod problem;
 
-pub use chart::{Chart, ChartCell, ChartOptions, chart};
+pub use chart::{Chart, ChartCell, ChartObjective, ChartOptions, chart};
 pub use heatmap::draw as draw_chart;
 
 use crate::dispersion::Noise;
@@ -168,7 +168,7 @@ pub struct Start {
     pub from: Point,
     /// Where it converged.
     pub to: Point,
-    /// The objective there (carry m, or side spread m).
+    /// The objective there (carry or total m, or side spread m).
     pub objective_value: f64,
     /// Objective evaluations used.
     pub evaluations: u64,
@@ -190,12 +190,12 @@ pub struct Flatness {
 /// The optimum and how it was found.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Optimum {
-    /// `carry` or `dispersion`.
+    /// `carry`, `total` or `dispersion`.
     pub objective: &'static str,
     /// The optimal delivery variables.
     #[serde(flatten)]
     pub point: Point,
-    /// The objective there (carry m, or side spread m).
+    /// The objective there (carry or total m, or side spread m).
     pub objective_value: f64,
     /// The shot at the optimum (launch and landing).
     pub shot: ShotSummary,
@@ -212,7 +212,7 @@ pub struct Optimum {
 /// Finds the best delivery within `options`' bounds.
 ///
 /// # Errors
-/// [`Error::Invalid`] for no starts, the `total` objective (no ground model yet), or a
+/// [`Error::Invalid`] for no starts, the `total` objective without a ground in the scene, or a
 /// dispersion objective without noise or shots; [`Error::Core`] when the base delivery at
 /// the box centre is not a valid shot; [`Error::Library`] if argmin fails.
 pub fn optimize<T: Real>(setup: &Setup<T>, options: &Options) -> Result<Optimum> {
