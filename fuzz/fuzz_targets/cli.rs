@@ -62,7 +62,15 @@ fn arguments(bytes: &[u8]) {
         Command::Shot(c) => c.resolve().map(|r| (Mode::Shot, r)),
         Command::Optimize(c) => {
             let s = &c.search;
-            if s.starts <= 3 && c.monte_carlo.shots.unwrap_or(0) <= 64 && !s.chart {
+            // A chart only on a small grid given in full (at most 4 cells; the grid's own
+            // validation sees the rest: a bad triple is an error before any cell runs).
+            let cells = |t: Option<[f64; 3]>| {
+                t.map(|[a, b, step]| ((b - a) / step).abs())
+                    .filter(|n| *n <= 1.0)
+            };
+            let small_chart = cells(s.club_speeds).is_some() && cells(s.attack_angles).is_some();
+            if s.starts <= 3 && c.monte_carlo.shots.unwrap_or(0) <= 64 && (!s.chart || small_chart)
+            {
                 let _ = c.run();
             }
             return;
