@@ -169,8 +169,9 @@ fn run<'s, T: Real, R: Rhs<T>>(
     let velocity = Vector3::new(y[3], y[4], y[5]);
     let carry_x = position.x - p0.x;
     let side = position.z - p0.z;
-    let ground = match &scene.ground {
-        None => None,
+    let mut ground = None;
+    match &scene.ground {
+        None => {}
         Some(g) => {
             let first = Contact {
                 time: landing.time,
@@ -183,16 +184,17 @@ fn run<'s, T: Real, R: Rhs<T>>(
                 time_limit: scene.time_limit,
                 method,
             };
-            Some(crate::ground::run_out(
+            crate::ground::run_out(
                 g,
                 scene.field.gravity,
                 &p0,
                 &first,
                 &hopper,
                 recorder.as_deref_mut(),
-            )?)
+                &mut ground,
+            )?;
         }
-    };
+    }
     Ok(FlightOutcome {
         carry_m: carry_x.hypot(side),
         carry_x_m: carry_x,
@@ -252,13 +254,15 @@ fn into_the_ground<T: Real>(
         time_limit: scene.time_limit,
         method,
     };
-    let rollout = crate::ground::run_out(
+    let mut rollout = None;
+    crate::ground::run_out(
         ground,
         scene.field.gravity,
         &p0,
         &first,
         &hopper,
         recorder.as_deref_mut(),
+        &mut rollout,
     )?;
     Ok(FlightOutcome {
         carry_m: T::zero(),
@@ -276,7 +280,7 @@ fn into_the_ground<T: Real>(
         air_density_kgm3: scene.density,
         stats: Stats::default(),
         recording_full: recorder.is_some_and(|r| r.is_full()),
-        ground: Some(rollout),
+        ground: rollout,
     })
 }
 
