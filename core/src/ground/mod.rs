@@ -23,7 +23,7 @@ pub mod roll;
 pub mod surface;
 
 use crate::error::{Error, Field, Reason, Result};
-use crate::real::{Real, length, lit};
+use crate::real::{Real, all_finite, length, lit};
 use crate::trajectory::{Contact, Plane, Recorder, Stats};
 use crate::validate::finite_vector;
 #[cfg(test)]
@@ -277,7 +277,8 @@ fn run_out_on<T: Real, H: Hopper<T>, N: Normal<T>>(
         // Back onto the plane (the landing is on it to the root finder's accuracy).
         at.position -= n.scaled(n.dot(&at.position) - plane.offset);
     };
-    if !(roll_velocity.iter().all(|x| x.is_finite()) && roll_spin.iter().all(|x| x.is_finite())) {
+    let (v, w) = (roll_velocity, roll_spin);
+    if !all_finite(&[v.x, v.y, v.z, w.x, w.y, w.z]) {
         return Err(Error::Unstable);
     }
     let end = roll::Roll {
@@ -292,7 +293,7 @@ fn run_out_on<T: Real, H: Hopper<T>, N: Normal<T>>(
     }
     .run(at.position, roll_velocity, &roll_spin);
     let rest = end.position;
-    if !(rest.iter().all(|x| x.is_finite()) && end.duration.is_finite()) {
+    if !all_finite(&[rest.x, rest.y, rest.z, end.duration]) {
         return Err(Error::Unstable);
     }
     let along = rest - first.position;
