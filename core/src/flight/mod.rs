@@ -170,30 +170,27 @@ fn run<'s, T: Real, R: Rhs<T>>(
     let carry_x = position.x - p0.x;
     let side = position.z - p0.z;
     let mut ground = None;
-    match &scene.ground {
-        None => {}
-        Some(g) => {
-            let first = Contact {
-                time: landing.time,
-                position,
-                velocity,
-                spin: axis * y[S],
-            };
-            let hopper = Hops {
-                field: &scene.field,
-                time_limit: scene.time_limit,
-                method,
-            };
-            crate::ground::run_out(
-                g,
-                scene.field.gravity,
-                &p0,
-                &first,
-                &hopper,
-                recorder.as_deref_mut(),
-                &mut ground,
-            )?;
-        }
+    if let Some(g) = &scene.ground {
+        let first = Contact {
+            time: landing.time,
+            position,
+            velocity,
+            spin: axis * y[S],
+        };
+        let hopper = Hops {
+            field: &scene.field,
+            time_limit: scene.time_limit,
+            method,
+        };
+        crate::ground::run_out(
+            g,
+            scene.field.gravity,
+            &p0,
+            &first,
+            &hopper,
+            recorder.as_deref_mut(),
+            &mut ground,
+        )?;
     }
     Ok(FlightOutcome {
         carry_m: carry_x.hypot(side),

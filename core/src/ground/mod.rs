@@ -181,7 +181,7 @@ pub struct Rollout<T: Real> {
     pub stats: Stats,
 }
 
-/// Bounces and rolls from the first landing `first` to rest, into `out` (`None` until then).
+/// Bounces and rolls from the first landing `first` to rest, into `out` (untouched on an error).
 ///
 /// The rollout is written in place, not returned in the `Result`: there LLVM split the
 /// niche-packed `Result<Rollout>` around the error's bytes and moved the rest with
