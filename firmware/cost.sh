@@ -29,7 +29,7 @@ CARRY_QEMU_ARGS="-icount shift=0 -plugin $plugin,out=$tmp/icount.txt,profile=${P
 
 echo "# instruction counts on $BOARD ($TARGET) — $(git -C .. rev-parse --short HEAD 2>/dev/null || echo uncommitted)"
 awk '
-    FNR == NR { if ($1 == "icount" && $2 == "region") exact[$3] = $4; next }
+    FNR == NR { if ($1 == "icount" && $2 == "region" && $4 != "fn") exact[$3] = $4; next }
     /^note: region/ { sub(/^note: /, ""); notes = notes "\n- " $0; next }
     /^cost region=/ {
         for (i = 2; i <= 7; i++) { split($i, kv, "="); v[kv[1]] = kv[2] }

@@ -94,6 +94,38 @@ pub fn to_f64<T: Real>(x: T) -> f64 {
     nalgebra::try_convert(x).unwrap_or(f64::NAN)
 }
 
+/// Whether this target computes in `f32` in hardware (hosts, hard-float ARM).
+const HARDWARE_F32: bool = cfg!(any(not(target_os = "none"), target_abi = "eabihf"));
+/// Whether this target computes in `f64` in hardware: hosts. Not on bare metal, where the
+/// Cortex-M4F and M0 compute it in software (the M7's double-precision unit is not told
+/// apart).
+const HARDWARE_F64: bool = cfg!(not(target_os = "none"));
+
+/// Whether every value is finite.
+///
+/// Where the precision's arithmetic is in hardware (hosts; `f32` on hard-float ARM, the
+/// Cortex-M4F and M7) as `Σ xᵢ·0 = 0`: a finite value times zero is a zero (of either
+/// sign) and a sum of zeros is zero; an infinity or a NaN times zero is NaN, and so is any
+/// sum with it. One multiply–add per value where `is_finite` tests each value's exponent
+/// bits in integer registers. In software floating point (`f64` on bare metal, `f32` on
+/// the Cortex-M0) a multiply is a library call: `is_finite` there. The same answer either
+/// way (unit test `real::tests::all_finite_is_every_value_finite`).
+#[inline(always)]
+#[must_use]
+pub(crate) fn all_finite<T: Real>(values: &[T]) -> bool {
+    let hardware = if core::mem::size_of::<T>() == 4 {
+        HARDWARE_F32
+    } else {
+        HARDWARE_F64
+    };
+    if hardware {
+        let zero = T::zero();
+        values.iter().fold(zero, |sum, &x| sum + x * zero) == zero
+    } else {
+        values.iter().all(|x| x.is_finite())
+    }
+}
+
 /// The larger of `a` and `b`, or the one that is not NaN: C's `fmax`, written as a
 /// comparison so that it inlines. `RealField::max` calls libm's `fmaxf`/`fmax` out of line,
 /// a call in every step of the integrator on the Cortex-M4F (docs/firmware.md). Same
@@ -127,6 +159,54 @@ pub fn smaller<T: Real>(a: T, b: T) -> T {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// `all_finite` against `is_finite` on every pair of special and ordinary values, in
+    /// both precisions (zeros of either sign, subnormals, the largest finite values).
+    #[test]
+    fn all_finite_is_every_value_finite() {
+        fn check<T: Real + Copy + core::fmt::Debug>(values: &[T], finite: impl Fn(T) -> bool) {
+            for &a in values {
+                assert_eq!(all_finite(&[a]), finite(a), "{a:?}");
+                for &b in values {
+                    for set in [[a, b, T::zero()], [T::one(), a, b]] {
+                        let expected = set.iter().all(|&x| finite(x));
+                        assert_eq!(all_finite(&set), expected, "{set:?}");
+                    }
+                }
+            }
+            assert!(all_finite::<T>(&[]));
+        }
+        check(
+            &[
+                0.0,
+                -0.0,
+                1.0,
+                -3.5,
+                f64::MIN_POSITIVE / 4.0,
+                f64::MAX,
+                f64::MIN,
+                f64::INFINITY,
+                f64::NEG_INFINITY,
+                f64::NAN,
+            ],
+            f64::is_finite,
+        );
+        check(
+            &[
+                0.0,
+                -0.0,
+                1.0,
+                -3.5,
+                f32::MIN_POSITIVE / 4.0,
+                f32::MAX,
+                f32::MIN,
+                f32::INFINITY,
+                f32::NEG_INFINITY,
+                f32::NAN,
+            ],
+            f32::is_finite,
+        );
+    }
 
     #[test]
     fn larger_and_smaller_are_fmax_and_fmin() {

@@ -303,8 +303,11 @@ impl<T: Real> Forces<T> {
     /// `∂(Δ·c·V)/∂V = Δ·c·(6c − 5)` (from `V²` alone, beside the square root). The modern
     /// family's spin term is left out: it is zero past the lift's saturation, and below it
     /// the spin decays by about 1–2 % a second at run-out speeds.
+    ///
+    /// Inlined on hosts and on hard-float targets (the M4F: a call spills and shuffles the
+    /// low hop's live registers around it); out of line on the micro:bit (flash, stack).
     #[allow(clippy::too_many_arguments)]
-    #[cfg_attr(not(target_os = "none"), inline(always))]
+    #[cfg_attr(any(not(target_os = "none"), target_abi = "eabihf"), inline(always))]
     pub(crate) fn factor_rates(
         &self,
         speed: T,

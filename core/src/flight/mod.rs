@@ -169,30 +169,29 @@ fn run<'s, T: Real, R: Rhs<T>>(
     let velocity = Vector3::new(y[3], y[4], y[5]);
     let carry_x = position.x - p0.x;
     let side = position.z - p0.z;
-    let ground = match &scene.ground {
-        None => None,
-        Some(g) => {
-            let first = Contact {
-                time: landing.time,
-                position,
-                velocity,
-                spin: axis * y[S],
-            };
-            let hopper = Hops {
-                field: &scene.field,
-                time_limit: scene.time_limit,
-                method,
-            };
-            Some(crate::ground::run_out(
-                g,
-                scene.field.gravity,
-                &p0,
-                &first,
-                &hopper,
-                recorder.as_deref_mut(),
-            )?)
-        }
-    };
+    let mut ground = None;
+    if let Some(g) = &scene.ground {
+        let first = Contact {
+            time: landing.time,
+            position,
+            velocity,
+            spin: axis * y[S],
+        };
+        let hopper = Hops {
+            field: &scene.field,
+            time_limit: scene.time_limit,
+            method,
+        };
+        crate::ground::run_out(
+            g,
+            scene.field.gravity,
+            &p0,
+            &first,
+            &hopper,
+            recorder.as_deref_mut(),
+            &mut ground,
+        )?;
+    }
     Ok(FlightOutcome {
         carry_m: carry_x.hypot(side),
         carry_x_m: carry_x,
@@ -252,13 +251,15 @@ fn into_the_ground<T: Real>(
         time_limit: scene.time_limit,
         method,
     };
-    let rollout = crate::ground::run_out(
+    let mut rollout = None;
+    crate::ground::run_out(
         ground,
         scene.field.gravity,
         &p0,
         &first,
         &hopper,
         recorder.as_deref_mut(),
+        &mut rollout,
     )?;
     Ok(FlightOutcome {
         carry_m: T::zero(),
@@ -276,7 +277,7 @@ fn into_the_ground<T: Real>(
         air_density_kgm3: scene.density,
         stats: Stats::default(),
         recording_full: recorder.is_some_and(|r| r.is_full()),
-        ground: Some(rollout),
+        ground: rollout,
     })
 }
 

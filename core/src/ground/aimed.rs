@@ -23,7 +23,7 @@ use crate::integrator::events::Step;
 use crate::integrator::integrate::{
     Adaptive, Stages, dormand_prince_stages, error_weights, scaled_error,
 };
-use crate::real::{Real, larger, lit};
+use crate::real::{Real, all_finite, larger, lit};
 use crate::trajectory::{Contact, Plane, Recorder, Stats};
 use nalgebra::Vector3;
 
@@ -64,7 +64,7 @@ pub(crate) fn aimed_hop<T: Real>(
     let k7 = f1.derivative(&y1);
     stats.force_evaluations = stats.force_evaluations.saturating_add(6);
     let err = scaled_error(h, [&k1, &k3, &k4, &k5, &k6, &k7], &weight);
-    let landing = (err <= T::one() && y1.iter().all(|x| x.is_finite()))
+    let landing = (err <= T::one() && all_finite(&y1))
         .then(|| {
             let p1 = Vector3::new(y1[0], y1[1], y1[2]);
             let v1 = Vector3::new(y1[3], y1[4], y1[5]);

@@ -130,9 +130,10 @@ pub(crate) fn rebound<T: Real, N: Normal<T>>(
     let vt_sq = n.tangential_sq(velocity);
     let vt = vt_sq.root();
     // The direction of the tangential velocity (off the critical path: only `w` and the
-    // rebound's direction need it).
+    // rebound's direction need it). Its length is `v_t`: for a ball moving into the plane
+    // `v + v_n n̂` is `v − (v·n̂)n̂` bit for bit, whose square `tangential_sq` sums alike.
     let vt_vec = velocity + n.scaled(vn);
-    let t = tangent_direction(&vt_vec, length(&vt_vec), spin, &n.vector());
+    let t = tangent_direction(&vt_vec, vt, spin, &n.vector());
     // b̂ = t̂ × n̂ = −(n̂ × t̂)
     let b = -n.cross(&t);
     let w = spin.dot(&b);

@@ -8,7 +8,7 @@ use super::normal::Normal;
 use crate::aero::{Dynamics, ForceEvaluation, ForceField, S, State};
 use crate::error::{Error, Result};
 use crate::integrator::{Method, events, integrate_to_event};
-use crate::real::{Real, larger, lit, smaller};
+use crate::real::{Real, all_finite, larger, lit, smaller};
 use crate::trajectory::{Contact, Plane, Recorder, Stats};
 use nalgebra::Vector3;
 
@@ -258,7 +258,7 @@ pub(crate) fn hop_landing<T: Real>(vn: T, an: T, jn: T) -> Option<T> {
     let per_an = T::one() / an;
     let tau0 = -two * vn * per_an;
     let x = jn * (tau0 * per_an * lit::<T>(-1.0 / 3.0));
-    if x.abs() <= lit::<T>(1.0 / 32.0) && tau0 > T::zero() && tau0.is_finite() {
+    if x.abs() <= lit::<T>(1.0 / 32.0) && tau0 > T::zero() && all_finite(&[tau0]) {
         let x2 = x * x;
         let low = T::one() + x + x2 * (two + lit::<T>(5.0) * x);
         let high = lit::<T>(14.0) + lit::<T>(42.0) * x;

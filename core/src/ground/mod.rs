@@ -23,7 +23,7 @@ pub mod roll;
 pub mod surface;
 
 use crate::error::{Error, Field, Reason, Result};
-use crate::real::{Real, length, lit};
+use crate::real::{Real, all_finite, length, lit};
 use crate::trajectory::{Contact, Plane, Recorder, Stats};
 use crate::validate::finite_vector;
 #[cfg(test)]
@@ -181,7 +181,12 @@ pub struct Rollout<T: Real> {
     pub stats: Stats,
 }
 
-/// Bounces and rolls from the first landing `first` to rest.
+/// Bounces and rolls from the first landing `first` to rest, into `out` (untouched on an error).
+///
+/// The rollout is written in place, not returned in the `Result`: there LLVM split the
+/// niche-packed `Result<Rollout>` around the error's bytes and moved the rest with
+/// unaligned `memcpy` calls in the flight's caller, with or without a ground
+/// (docs/ground.md, *Cost*).
 ///
 /// On level ground (`n̂ = ŷ` exactly) with the normal's products as components
 /// ([`normal::Level`]): the same results to rounding, a shorter chain of dependent steps
@@ -195,7 +200,8 @@ pub(crate) fn run_out<T: Real, H: Hopper<T>>(
     first: &Contact<T>,
     hopper: &H,
     recorder: Option<&mut Recorder<'_, T>>,
-) -> Result<Rollout<T>> {
+    out: &mut Option<Rollout<T>>,
+) -> Result<()> {
     #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
     if ground.normal == Vector3::y() {
         return run_out_on(
@@ -206,6 +212,7 @@ pub(crate) fn run_out<T: Real, H: Hopper<T>>(
             first,
             hopper,
             recorder,
+            out,
         );
     }
     run_out_on(
@@ -216,10 +223,12 @@ pub(crate) fn run_out<T: Real, H: Hopper<T>>(
         first,
         hopper,
         recorder,
+        out,
     )
 }
 
 /// [`run_out`] on the plane of unit normal `n` (the ground's).
+#[allow(clippy::too_many_arguments)]
 fn run_out_on<T: Real, H: Hopper<T>, N: Normal<T>>(
     ground: &PreparedGround<T>,
     n: N,
@@ -228,7 +237,8 @@ fn run_out_on<T: Real, H: Hopper<T>, N: Normal<T>>(
     first: &Contact<T>,
     hopper: &H,
     recorder: Option<&mut Recorder<'_, T>>,
-) -> Result<Rollout<T>> {
+    out: &mut Option<Rollout<T>>,
+) -> Result<()> {
     let mut recorder = recorder;
     let plane = Plane {
         normal: n.vector(),
@@ -267,7 +277,8 @@ fn run_out_on<T: Real, H: Hopper<T>, N: Normal<T>>(
         // Back onto the plane (the landing is on it to the root finder's accuracy).
         at.position -= n.scaled(n.dot(&at.position) - plane.offset);
     };
-    if !(roll_velocity.iter().all(|x| x.is_finite()) && roll_spin.iter().all(|x| x.is_finite())) {
+    let (v, w) = (roll_velocity, roll_spin);
+    if !all_finite(&[v.x, v.y, v.z, w.x, w.y, w.z]) {
         return Err(Error::Unstable);
     }
     let end = roll::Roll {
@@ -282,7 +293,7 @@ fn run_out_on<T: Real, H: Hopper<T>, N: Normal<T>>(
     }
     .run(at.position, roll_velocity, &roll_spin);
     let rest = end.position;
-    if !(rest.iter().all(|x| x.is_finite()) && end.duration.is_finite()) {
+    if !all_finite(&[rest.x, rest.y, rest.z, end.duration]) {
         return Err(Error::Unstable);
     }
     let along = rest - first.position;
@@ -291,7 +302,7 @@ fn run_out_on<T: Real, H: Hopper<T>, N: Normal<T>>(
     // (No `hypot`: the distances are metres, far from overflow; libm's is out of line.)
     let (dx, dz) = (rest.x - launch_position.x, rest.z - launch_position.z);
     let total = (dx * dx + dz * dz).root();
-    Ok(Rollout {
+    *out = Some(Rollout {
         total_m: total,
         roll_m: if along.dot(&forward) < T::zero() {
             -roll
@@ -307,7 +318,8 @@ fn run_out_on<T: Real, H: Hopper<T>, N: Normal<T>>(
             RunEnd::Rest
         },
         stats,
-    })
+    });
+    Ok(())
 }
 
 #[cfg(test)]
