@@ -116,33 +116,30 @@ fn optimize_csv_chart_and_svg() {
     assert!(cells[0].get("total_m").is_none(), "no ground, no total");
     // The chart of the total (with a ground): each cell's total beyond its carry, and at
     // least the total of the carry chart's loft; its text table gains roll and total.
-    let total = json(&[
-        "optimize",
-        "--chart",
-        "--objective",
-        "total",
-        "--ground",
-        "fairway",
-        "--club-speeds",
-        "40,45,5",
-        "--attack-angles",
-        "0,0,1",
-        "--json",
-    ]);
-    let carry = json(&[
-        "optimize",
-        "--chart",
-        "--ground",
-        "fairway",
-        "--club-speeds",
-        "40,45,5",
-        "--attack-angles",
-        "0,0,1",
-        "--json",
-    ]);
+    let chart = |objective: &str, tail: &[&str]| {
+        let mut args = vec![
+            "optimize",
+            "--chart",
+            "--objective",
+            objective,
+            "--ground",
+            "fairway",
+            "--attack-angles",
+            "0,0,1",
+        ];
+        args.extend_from_slice(tail);
+        args.iter()
+            .map(|a| (*a).to_owned())
+            .collect::<Vec<String>>()
+    };
+    let speeds = ["--club-speeds", "40,45,5", "--json"];
+    let cells_of = |args: Vec<String>| {
+        let args: Vec<&str> = args.iter().map(String::as_str).collect();
+        json(&args)["cells"].as_array().cloned().unwrap_or_default()
+    };
     let (t, c) = (
-        total["cells"].as_array().cloned().unwrap_or_default(),
-        carry["cells"].as_array().cloned().unwrap_or_default(),
+        cells_of(chart("total", &speeds)),
+        cells_of(chart("carry", &speeds)),
     );
     assert_eq!((t.len(), c.len()), (2, 2));
     for (t, c) in t.iter().zip(&c) {
@@ -150,18 +147,8 @@ fn optimize_csv_chart_and_svg() {
         assert!(num(&t["total_m"]) >= num(&c["total_m"]) - 1e-3, "{t} {c}");
         assert!(num(&c["carry_m"]) >= num(&t["carry_m"]) - 1e-3, "{t} {c}");
     }
-    let r = run(&[
-        "optimize",
-        "--chart",
-        "--objective",
-        "total",
-        "--ground",
-        "fairway",
-        "--club-speeds",
-        "45,45,5",
-        "--attack-angles",
-        "0,0,1",
-    ]);
+    let text = chart("total", &["--club-speeds", "45,45,5"]);
+    let r = run(&text.iter().map(String::as_str).collect::<Vec<_>>());
     assert_eq!(r.code, 0, "{}", r.stderr);
     assert!(
         r.stdout.lines().next().unwrap_or("").contains("total"),
