@@ -3,7 +3,9 @@
 
 use crate::error::InputError;
 use crate::params::{ClubParams, DEFAULT_BACKSPIN_RPM, Params};
-use crate::report::{ClubAfter, FlightReport, GroundReport, LaunchFigures, LaunchReport, Report};
+use crate::report::{
+    ClubAfter, FlightReport, GroundReport, LaunchFigures, LaunchReport, Report, f3,
+};
 use carry_core::flight::{Integrator, Recorder, Sample};
 use carry_core::impact::{self, Solver};
 use carry_core::real::{lit, to_f64};
@@ -157,10 +159,6 @@ impl Numerics {
 
 fn v3<T: Real>(v: [f64; 3]) -> Vector3<T> {
     Vector3::new(lit(v[0]), lit(v[1]), lit(v[2]))
-}
-
-fn f3<T: Real>(v: &Vector3<T>) -> [f64; 3] {
-    [to_f64(v.x), to_f64(v.y), to_f64(v.z)]
 }
 
 /// The club head of `c` in precision `T`, validated.

@@ -125,16 +125,20 @@ pub struct GroundReport {
     pub still_rolling: bool,
 }
 
+/// A vector's components in `f64` (a report's `[x, y, z]`).
+pub(crate) fn f3<T: Real>(v: &nalgebra::Vector3<T>) -> [f64; 3] {
+    [to_f64(v.x), to_f64(v.y), to_f64(v.z)]
+}
+
 impl GroundReport {
     /// The report of a core run-out (the CLI's `flight` keys, the lab's shot summaries).
     #[must_use]
     pub fn of<T: Real>(g: &Rollout<T>) -> Self {
-        let p = &g.rest_position_m;
         Self {
             total_m: to_f64(g.total_m),
             roll_m: to_f64(g.roll_m),
             bounces: g.bounces,
-            rest_position_m: [to_f64(p.x), to_f64(p.y), to_f64(p.z)],
+            rest_position_m: f3(&g.rest_position_m),
             time_to_rest_s: to_f64(g.time_to_rest_s),
             still_rolling: g.end == RunEnd::StillRolling,
         }

@@ -6,7 +6,7 @@
 //! method (Brent 1973, *Algorithms for Minimization without Derivatives*, ch. 5: golden
 //! section with parabolic interpolation); the cells run in parallel (rayon).
 
-use super::Range;
+use super::{Range, require_ground};
 use crate::error::{Error, Input, Result};
 use crate::setup::{Setup, ShotSummary};
 use argmin::core::{CostFunction, Executor, State as _};
@@ -150,11 +150,8 @@ pub fn chart<T: Real>(setup: &Setup<T>, options: &ChartOptions) -> Result<Chart>
             "need one or more finite attack angles",
         ));
     }
-    if options.objective == ChartObjective::Total && setup.scene.ground().is_none() {
-        return Err(Error::invalid(
-            Input::Objective,
-            "total distance needs a ground (e.g. --ground fairway) to bounce and roll on",
-        ));
+    if options.objective == ChartObjective::Total {
+        require_ground(setup)?;
     }
     let grid: Vec<(f64, f64)> = options
         .club_speeds_mps

@@ -209,6 +209,18 @@ pub struct Optimum {
     pub starts: Vec<Start>,
 }
 
+/// The total objective's requirement (the optimum's and the chart's): a ground in the
+/// scene to bounce and roll on.
+fn require_ground<T: Real>(setup: &Setup<T>) -> Result<()> {
+    if setup.scene.ground().is_none() {
+        return Err(Error::invalid(
+            Input::Objective,
+            "total distance needs a ground (e.g. --ground fairway) to bounce and roll on",
+        ));
+    }
+    Ok(())
+}
+
 /// Finds the best delivery within `options`' bounds.
 ///
 /// # Errors

@@ -1,7 +1,7 @@
 //! The optimizer's problem: the unit cube ↔ delivery variables, the penalised cost that
 //! argmin's Nelder–Mead minimises, and the evaluation counter.
 
-use super::{Flatness, Objective, Options, Range};
+use super::{Flatness, Objective, Options, Range, require_ground};
 use crate::dispersion::{self, Noise};
 use crate::error::{Error, Input, Result};
 use crate::setup::Setup;
@@ -65,14 +65,7 @@ impl<'a, T: Real> Problem<'a, T> {
     pub(super) fn new(setup: &'a Setup<T>, o: &Options) -> Result<Self> {
         match o.objective {
             Objective::Carry => {}
-            Objective::Total => {
-                if setup.scene.ground().is_none() {
-                    return Err(Error::invalid(
-                        Input::Objective,
-                        "total distance needs a ground (e.g. --ground fairway) to bounce and roll on",
-                    ));
-                }
-            }
+            Objective::Total => require_ground(setup)?,
             Objective::Dispersion { noise, shots, .. } => {
                 noise.validate()?;
                 if noise == Noise::default() {
