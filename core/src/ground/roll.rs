@@ -273,10 +273,18 @@ impl<T: Real, N: Normal<T>> Roll<'_, '_, T, N> {
             let vb = if s > T::zero() { va * (s1 / s) } else { va };
             let p1 = p + (va + vb) * half_h;
             let v1 = vb + pull * half_h;
+            // Samples inside the step at constant acceleration `(v₁ − v₀)/h`: the position
+            // consistent with the velocity (its end is the step's, `p₀ + (v₀ + v₁)h/2`).
+            // A straight chord would lag a decelerating ball, and a sample up a slope
+            // would then show less energy than the next (found by the ground property test).
             let (p0s, v0s, t0) = (p, v, t);
+            let accel = (v1 - v0s) / h;
             self.record_span(t0, t0 + h, |ts| {
-                let f = (ts - t0) / h;
-                (p0s + (p1 - p0s) * f, v0s + (v1 - v0s) * f)
+                let tau = ts - t0;
+                (
+                    p0s + v0s * tau + accel * (tau * tau * lit(0.5)),
+                    v0s + accel * tau,
+                )
             });
             p = p1;
             v = v1;
