@@ -13,7 +13,7 @@
 //! ```text
 //! v_n = −n·u⁰ > 0,   u⁰_t = u⁰ + v_n n,   tan ψ = |u⁰_t| / v_n          (obliquity ψ)
 //! e(v_n) = clamp(e_c − k_e (v_n − 48.77 m/s), 0, 1)                      (Penner 2001)
-//! e_t(ψ) = clamp(e_t0 + s_t tan ψ, 0, 1)                                  (Cross 2002/2005)
+//! e_t(ψ) = clamp(e_t0 + s_t tan ψ, 0, e_t,max)                            (Cross 2002/2005)
 //! grip:   u* = e v_n n − e_t u⁰_t,   P = λ K⁻¹u* − K⁻¹u⁰,
 //!         λ = min(1, ‖u⁰‖/‖u*‖) in the energy norm ‖x‖² = xᵀK⁻¹x
 //! slide, when |P_t| > μ P_n (outside the friction cone):
@@ -74,6 +74,12 @@ pub struct CompliantContact<T> {
     pub tangential_restitution: T,
     /// Change of e_t per unit tan ψ (obliquity ψ from the normal); finite, any sign.
     pub tangential_restitution_slope: T,
+    /// Ceiling e_t,max of the tangential restitution, in [0, 1] (1: the line alone). The
+    /// line rises with obliquity while the ball grips; the elastic energy its tangential
+    /// spring can return is bounded (Cross 2002 measures e_t up to 0.3–0.5 where a ball
+    /// grips, falling once it slides: Maw, Barber & Fawcett 1976), so the law holds the
+    /// plateau of that hump rather than extrapolating the line to steep wedges.
+    pub tangential_restitution_max: T,
     /// Fall of the normal restitution per m/s of normal speed above
     /// [`COR_TEST_SPEED_MPS`], k_e ≥ 0 (s/m).
     pub restitution_speed_slope_spm: T,
@@ -99,7 +105,7 @@ impl<T: Real> ContactLaw<T> {
     /// # Errors
     /// [`Error::InvalidInput`] naming the first bad parameter: μ NaN or negative, e_t
     /// e_t0
-    /// outside [−1, 1], a non-finite slope, a negative speed slope.
+    /// outside [−1, 1], a non-finite slope, e_t,max outside [0, 1], a negative speed slope.
     pub fn validate(&self) -> Result<Self> {
         match self {
             Self::Rolling => Ok(Self::Rolling),
@@ -134,6 +140,12 @@ impl<T: Real> CompliantContact<T> {
                 self.tangential_restitution_slope,
                 Field::TangentialRestitutionSlope,
             )?,
+            tangential_restitution_max: in_range(
+                self.tangential_restitution_max,
+                T::zero(),
+                T::one(),
+                Field::TangentialRestitutionMax,
+            )?,
             restitution_speed_slope_spm: non_negative(
                 self.restitution_speed_slope_spm,
                 Field::RestitutionSpeedSlope,
@@ -150,10 +162,11 @@ impl<T: Real> CompliantContact<T> {
         clamp01(e)
     }
 
-    /// Tangential restitution at obliquity `tan ψ`: `clamp(e_t0 + s_t tan ψ, 0, 1)`.
+    /// Tangential restitution at obliquity `tan ψ`: `clamp(e_t0 + s_t tan ψ, 0, e_t,max)`.
     #[must_use]
     pub fn tangential_restitution_at(&self, tan_obliquity: T) -> T {
-        clamp01(self.tangential_restitution + self.tangential_restitution_slope * tan_obliquity)
+        let line = self.tangential_restitution + self.tangential_restitution_slope * tan_obliquity;
+        line.max(T::zero()).min(self.tangential_restitution_max)
     }
 
     /// The impulse on the ball for collision matrix `k`, approach velocity `u0` (contact
@@ -315,6 +328,7 @@ impl ContactLaw<f64> {
                 friction: lit(c.friction),
                 tangential_restitution: lit(c.tangential_restitution),
                 tangential_restitution_slope: lit(c.tangential_restitution_slope),
+                tangential_restitution_max: lit(c.tangential_restitution_max),
                 restitution_speed_slope_spm: lit(c.restitution_speed_slope_spm),
             }),
         }
@@ -334,6 +348,7 @@ mod tests {
             friction: mu,
             tangential_restitution: et,
             tangential_restitution_slope: 0.0,
+            tangential_restitution_max: 1.0,
             restitution_speed_slope_spm: 0.0,
         }
     }
@@ -373,6 +388,21 @@ mod tests {
         }
     }
 
+    /// The law is the line clamped into [0, e_t,max].
+    #[test]
+    fn tangential_restitution_is_the_capped_line() {
+        let c = CompliantContact {
+            tangential_restitution: -0.4,
+            tangential_restitution_slope: 1.3,
+            tangential_restitution_max: 0.25,
+            ..law(0.4, 0.0)
+        };
+        assert_eq!(c.tangential_restitution_at(0.2), 0.0);
+        assert!((c.tangential_restitution_at(0.4) - 0.12).abs() < 1e-12);
+        assert_eq!(c.tangential_restitution_at(0.9), 0.25);
+        assert_eq!(law(0.4, 0.7).tangential_restitution_at(5.0), 0.7);
+    }
+
     #[test]
     fn rejects_bad_parameters() {
         let bad = [
@@ -380,6 +410,20 @@ mod tests {
             (law(-0.1, 0.1), Field::Friction),
             (law(0.4, 1.1), Field::TangentialRestitution),
             (law(0.4, -1.5), Field::TangentialRestitution),
+            (
+                CompliantContact {
+                    tangential_restitution_max: 1.5,
+                    ..law(0.4, 0.1)
+                },
+                Field::TangentialRestitutionMax,
+            ),
+            (
+                CompliantContact {
+                    tangential_restitution_max: f64::NAN,
+                    ..law(0.4, 0.1)
+                },
+                Field::TangentialRestitutionMax,
+            ),
         ];
         for (c, field) in bad {
             assert!(

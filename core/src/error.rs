@@ -36,6 +36,8 @@ pub enum Field {
     TangentialRestitution,
     /// Change of the tangential restitution per unit tan(impact obliquity).
     TangentialRestitutionSlope,
+    /// Ceiling of the compliant contact's tangential restitution.
+    TangentialRestitutionMax,
     /// Fall of the normal restitution per m/s of normal impact speed (s/m).
     RestitutionSpeedSlope,
     // --- ball ---
@@ -240,6 +242,7 @@ impl Field {
             Self::Friction => "friction coefficient",
             Self::TangentialRestitution => "tangential restitution",
             Self::TangentialRestitutionSlope => "tangential restitution slope",
+            Self::TangentialRestitutionMax => "tangential restitution ceiling",
             Self::RestitutionSpeedSlope => "restitution speed slope",
             Self::BallMass => "ball mass",
             Self::BallRadius => "ball radius",

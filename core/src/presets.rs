@@ -25,9 +25,10 @@ use nalgebra::{Matrix3, Vector3};
 /// `../shared/data/club_delivery.csv`, `docs/impact.md`).
 pub const FITTED_CONTACT: ContactLaw<f64> = ContactLaw::Compliant(CompliantContact {
     friction: 0.40,
-    tangential_restitution: -0.08,
-    tangential_restitution_slope: 0.40,
-    restitution_speed_slope_spm: 0.003,
+    tangential_restitution: -0.30,
+    tangential_restitution_slope: 1.00,
+    tangential_restitution_max: 0.22,
+    restitution_speed_slope_spm: 0.0027,
 });
 
 /// A typical delivery of a club (launch-monitor terms; centred and square).
@@ -136,8 +137,8 @@ impl TypicalDelivery {
 /// height R, the normal tilted up by δ), so irons and wedges strike below the face centre
 /// and below the CG (vertical gear effect adds backspin).
 #[must_use]
-pub fn turf_impact_height_m(dynamic_loft_rad: f64, ball_radius_m: f64) -> f64 {
-    ball_radius_m * (1.0 - libm::sin(dynamic_loft_rad)) - IRON_FACE_CENTRE_HEIGHT_M
+pub fn turf_impact_height_m<T: Real>(dynamic_loft_rad: T, ball_radius_m: T) -> T {
+    ball_radius_m * (T::one() - dynamic_loft_rad.sin()) - lit(IRON_FACE_CENTRE_HEIGHT_M)
 }
 
 /// A named, documented club preset.
@@ -254,7 +255,7 @@ pub const PRESETS: [Preset; 13] = [
         typical: TypicalDelivery {
             club_speed_mps: 102.0 * MPS_PER_MPH,
             attack_angle_deg: -2.4,
-            dynamic_loft_deg: 12.9,
+            dynamic_loft_deg: 12.8,
             impact_height_m: -0.002,
         },
     },
@@ -273,8 +274,8 @@ pub const PRESETS: [Preset; 13] = [
         typical: TypicalDelivery {
             club_speed_mps: 98.0 * MPS_PER_MPH,
             attack_angle_deg: -2.9,
-            dynamic_loft_deg: 14.2,
-            impact_height_m: -0.0039,
+            dynamic_loft_deg: 13.9,
+            impact_height_m: -0.0038,
         },
     },
     Preset {
@@ -292,8 +293,8 @@ pub const PRESETS: [Preset; 13] = [
         typical: TypicalDelivery {
             club_speed_mps: 96.0 * MPS_PER_MPH,
             attack_angle_deg: -3.4,
-            dynamic_loft_deg: 15.8,
-            impact_height_m: -0.0045,
+            dynamic_loft_deg: 15.6,
+            impact_height_m: -0.0044,
         },
     },
     Preset {
@@ -311,7 +312,7 @@ pub const PRESETS: [Preset; 13] = [
         typical: TypicalDelivery {
             club_speed_mps: 94.0 * MPS_PER_MPH,
             attack_angle_deg: -3.7,
-            dynamic_loft_deg: 18.8,
+            dynamic_loft_deg: 18.7,
             impact_height_m: -0.0055,
         },
     },
@@ -330,8 +331,8 @@ pub const PRESETS: [Preset; 13] = [
         typical: TypicalDelivery {
             club_speed_mps: 92.0 * MPS_PER_MPH,
             attack_angle_deg: -3.9,
-            dynamic_loft_deg: 21.9,
-            impact_height_m: -0.0066,
+            dynamic_loft_deg: 22.0,
+            impact_height_m: -0.0067,
         },
     },
     Preset {
@@ -349,8 +350,8 @@ pub const PRESETS: [Preset; 13] = [
         typical: TypicalDelivery {
             club_speed_mps: 89.0 * MPS_PER_MPH,
             attack_angle_deg: -4.2,
-            dynamic_loft_deg: 24.6,
-            impact_height_m: -0.0075,
+            dynamic_loft_deg: 24.8,
+            impact_height_m: -0.0076,
         },
     },
     Preset {
@@ -387,8 +388,8 @@ pub const PRESETS: [Preset; 13] = [
         typical: TypicalDelivery {
             club_speed_mps: 84.0 * MPS_PER_MPH,
             attack_angle_deg: -4.7,
-            dynamic_loft_deg: 34.7,
-            impact_height_m: -0.0108,
+            dynamic_loft_deg: 33.8,
+            impact_height_m: -0.0105,
         },
     },
     Preset {
@@ -406,8 +407,8 @@ pub const PRESETS: [Preset; 13] = [
         typical: TypicalDelivery {
             club_speed_mps: 80.0 * MPS_PER_MPH,
             attack_angle_deg: -4.8,
-            dynamic_loft_deg: 38.7,
-            impact_height_m: -0.012,
+            dynamic_loft_deg: 37.8,
+            impact_height_m: -0.0117,
         },
     },
     Preset {
@@ -425,8 +426,8 @@ pub const PRESETS: [Preset; 13] = [
         typical: TypicalDelivery {
             club_speed_mps: 76.0 * MPS_PER_MPH,
             attack_angle_deg: -5.0,
-            dynamic_loft_deg: 44.7,
-            impact_height_m: -0.0137,
+            dynamic_loft_deg: 43.8,
+            impact_height_m: -0.0134,
         },
     },
     Preset {
@@ -444,8 +445,8 @@ pub const PRESETS: [Preset; 13] = [
         typical: TypicalDelivery {
             club_speed_mps: 72.0 * MPS_PER_MPH,
             attack_angle_deg: -5.0,
-            dynamic_loft_deg: 46.7,
-            impact_height_m: -0.0142,
+            dynamic_loft_deg: 45.8,
+            impact_height_m: -0.014,
         },
     },
 ];
@@ -455,12 +456,28 @@ impl Preset {
     /// loft `dynamic_loft_rad`: the typical strike height for a curved face (woods, teed or
     /// swept), [`turf_impact_height_m`] for a flat face (irons and wedges off firm turf).
     #[must_use]
-    pub fn strike_height_m(&self, dynamic_loft_rad: f64, ball_radius_m: f64) -> f64 {
+    pub fn strike_height_m<T: Real>(&self, dynamic_loft_rad: T, ball_radius_m: T) -> T {
         if self.roll_radius_m.is_finite() {
-            self.typical.impact_height_m
+            lit(self.typical.impact_height_m)
         } else {
             turf_impact_height_m(dynamic_loft_rad, ball_radius_m)
         }
+    }
+
+    /// The rule of a named club, defined once for every shell (the CLI's `--club NAME`, the
+    /// C API, Python, the lab): [`TypicalDelivery::completed`], except that a flat-faced
+    /// club given a dynamic loft and no impact height strikes where a ball of radius
+    /// `ball_radius_m` on firm turf meets the face at that loft
+    /// ([`Preset::strike_height_m`]): the typical height belongs to the typical loft.
+    #[must_use]
+    pub fn completed<T: Real>(&self, given: &GivenDelivery<T>, ball_radius_m: T) -> Delivery<T> {
+        let mut given = *given;
+        if given.impact_height_m.is_none() && !self.roll_radius_m.is_finite() {
+            given.impact_height_m = given
+                .dynamic_loft_rad
+                .map(|loft| self.strike_height_m(loft, ball_radius_m));
+        }
+        self.typical.completed(&given)
     }
 
     /// Looks a preset up by name or alias.
@@ -549,6 +566,48 @@ mod tests {
             assert!((t.impact_height_m - h).abs() <= 0.6e-4, "{}: {h}", p.name);
             assert!(t.dynamic_loft_deg < p.loft_deg, "{}", p.name);
         }
+    }
+
+    /// A flat face given a loft strikes at the turf height of that loft; a height given, or
+    /// a curved face, keeps the rule of the typical delivery.
+    #[test]
+    fn a_given_loft_moves_a_flat_faces_strike() {
+        let r = 0.021_336;
+        let loft = 0.40;
+        let given = GivenDelivery {
+            dynamic_loft_rad: Some(loft),
+            ..GivenDelivery::default()
+        };
+        let Some(iron) = Preset::find("7iron") else {
+            panic!("7iron")
+        };
+        let d = iron.completed(&given, r);
+        assert_eq!(d.location.height_m, turf_impact_height_m(loft, r));
+        assert_eq!(d.dynamic_loft_rad, loft);
+        let held = GivenDelivery {
+            impact_height_m: Some(0.001),
+            ..given
+        };
+        assert_eq!(iron.completed(&held, r).location.height_m, 0.001);
+        assert_eq!(
+            iron.completed(&GivenDelivery::default(), r),
+            iron.typical.delivery()
+        );
+        let wood = PRESETS[1];
+        assert_eq!(
+            wood.completed(&given, r).location.height_m,
+            wood.typical.impact_height_m
+        );
+        let f32_iron = iron.completed(
+            &GivenDelivery {
+                dynamic_loft_rad: Some(0.40_f32),
+                ..GivenDelivery::default()
+            },
+            0.021_336_f32,
+        );
+        assert!(
+            (f64::from(f32_iron.location.height_m) - turf_impact_height_m(loft, r)).abs() < 1e-7
+        );
     }
 
     #[test]

@@ -106,6 +106,7 @@ fn club<T: Real>(c: &CarryClub<T>) -> String {
             c.tangential_restitution_slope,
         )
         .f("restitution_speed_slope_spm", c.restitution_speed_slope_spm)
+        .f("tangential_restitution_max", c.tangential_restitution_max)
         .end()
 }
 

@@ -183,6 +183,8 @@ typedef struct CarryClub_f32 {
   float tangential_restitution_slope;
   // Compliant contact: fall of the normal restitution per m/s of normal speed (s/m).
   float restitution_speed_slope_spm;
+  // Compliant contact: ceiling of the tangential restitution, in [0, 1] (1: none).
+  float tangential_restitution_max;
 } CarryClub_f32;
 
 // A club head in single precision.
@@ -219,6 +221,8 @@ typedef struct CarryClub_f64 {
   double tangential_restitution_slope;
   // Compliant contact: fall of the normal restitution per m/s of normal speed (s/m).
   double restitution_speed_slope_spm;
+  // Compliant contact: ceiling of the tangential restitution, in [0, 1] (1: none).
+  double tangential_restitution_max;
 } CarryClub_f64;
 
 // A club head in double precision.

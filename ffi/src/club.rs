@@ -48,6 +48,8 @@ pub struct CarryClub<T> {
     pub tangential_restitution_slope: T,
     /// Compliant contact: fall of the normal restitution per m/s of normal speed (s/m).
     pub restitution_speed_slope_spm: T,
+    /// Compliant contact: ceiling of the tangential restitution, in [0, 1] (1: none).
+    pub tangential_restitution_max: T,
 }
 
 /// A ball (SI units).
@@ -91,6 +93,7 @@ impl<T: Real> CarryClub<T> {
             tangential_restitution: c.tangential_restitution,
             tangential_restitution_slope: c.tangential_restitution_slope,
             restitution_speed_slope_spm: c.restitution_speed_slope_spm,
+            tangential_restitution_max: c.tangential_restitution_max,
         }
     }
 
@@ -106,6 +109,7 @@ impl<T: Real> CarryClub<T> {
                 friction: self.friction,
                 tangential_restitution: self.tangential_restitution,
                 tangential_restitution_slope: self.tangential_restitution_slope,
+                tangential_restitution_max: self.tangential_restitution_max,
                 restitution_speed_slope_spm: self.restitution_speed_slope_spm,
             }),
             _ => return Err(CARRY_ERR_UNKNOWN_OPTION),
@@ -134,6 +138,7 @@ fn compliant_off<T: Real>() -> CompliantContact<T> {
             friction: T::zero(),
             tangential_restitution: T::zero(),
             tangential_restitution_slope: T::zero(),
+            tangential_restitution_max: T::one(),
             restitution_speed_slope_spm: T::zero(),
         },
     }

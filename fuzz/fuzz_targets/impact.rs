@@ -55,6 +55,7 @@ fn run<T: Real>(b: &mut Bytes<'_>) -> Result<()> {
                 tangential_restitution: lit(b.param(-1.1, 1.1)),
                 tangential_restitution_slope: lit(b.param(-5.0, 5.0)),
                 restitution_speed_slope_spm: lit(b.param(-0.01, 0.05)),
+                tangential_restitution_max: lit(b.param(-0.1, 1.1)),
             })
         },
     };

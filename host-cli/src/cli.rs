@@ -165,7 +165,8 @@ pub struct ClubArgs {
     /// restitution, COR falling with speed; calibrated on TrackMan data), `rolling` (the
     /// seed's rigid contact, rolling without slipping; what the golden files pin), or a
     /// FILE.toml with its parameters (friction, tangential_restitution,
-    /// tangential_restitution_slope, restitution_speed_slope_spm; as `carry fit` writes).
+    /// tangential_restitution_slope, tangential_restitution_max, restitution_speed_slope_spm;
+    /// as `carry fit` writes).
     /// The full solver supports only `rolling`.
     #[arg(long, value_name = "NAME|FILE.toml", value_parser = contact)]
     pub contact: Option<ContactLaw<f64>>,

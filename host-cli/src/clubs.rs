@@ -20,10 +20,11 @@ pub fn contact_summary(law: &ContactLaw<f64>) -> String {
     match law {
         ContactLaw::Rolling => "rolling (seed)".into(),
         ContactLaw::Compliant(c) => format!(
-            "compliant μ={} e_t={}{:+}·tanψ k_e={} s/m",
+            "compliant μ={} e_t=min({}{:+}·tanψ, {}) k_e={} s/m",
             c.friction,
             c.tangential_restitution,
             c.tangential_restitution_slope,
+            c.tangential_restitution_max,
             c.restitution_speed_slope_spm
         ),
     }
@@ -111,6 +112,7 @@ pub fn json() -> String {
                     "friction": finite(c.friction),
                     "tangential_restitution": c.tangential_restitution,
                     "tangential_restitution_slope": c.tangential_restitution_slope,
+                    "tangential_restitution_max": c.tangential_restitution_max,
                     "restitution_speed_slope_spm": c.restitution_speed_slope_spm,
                 }),
             };

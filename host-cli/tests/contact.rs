@@ -207,8 +207,8 @@ fn fit_compliant_family_evaluates_the_default() {
     ]);
     let summary = |q: usize, k: &str| v["fit"]["summary"][q][k].as_f64().expect("number");
     assert!((summary(0, "mean_abs_pct") - 1.44).abs() < 0.01);
-    assert!((summary(1, "mean_abs") - 0.63).abs() < 0.01);
-    assert!((summary(2, "mean_abs_pct") - 7.20).abs() < 0.01);
+    assert!((summary(1, "mean_abs") - 0.55).abs() < 0.01);
+    assert!((summary(2, "mean_abs_pct") - 5.45).abs() < 0.01);
     assert!(summary(2, "max_abs_pct") <= 30.0);
     let (code, _, err) = run(&[
         "fit",

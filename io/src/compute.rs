@@ -217,13 +217,33 @@ pub fn club_speed_mps(p: &Params) -> f64 {
     }
 }
 
-/// Impact height up the face (m): given, else the named club's typical strike, else 0.
+/// Impact height up the face (m): given, else the named club's strike (the core's rule,
+/// [`carry_core::Preset::completed`]: a flat face given a dynamic loft strikes where the
+/// turf puts the ball at that loft), else 0.
 #[must_use]
 pub fn impact_height_m(p: &Params) -> f64 {
-    p.delivery
-        .impact_height_m
-        .or_else(|| typical(p).map(|t| t.impact_height_m))
-        .unwrap_or(0.0)
+    p.delivery.impact_height_m.unwrap_or_else(|| {
+        if p.club.named {
+            p.club
+                .preset
+                .completed(&given::<f64>(p), p.ball_radius_m)
+                .location
+                .height_m
+        } else {
+            0.0
+        }
+    })
+}
+
+/// What the user gave of a delivery the named-club rule completes.
+fn given<T: Real>(p: &Params) -> carry_core::presets::GivenDelivery<T> {
+    let d = &p.delivery;
+    carry_core::presets::GivenDelivery {
+        club_speed_mps: d.club_speed_given.then(|| lit(d.club_speed_mps)),
+        attack_angle_rad: d.attack_angle_deg.map(|a| deg(lit(a))),
+        dynamic_loft_rad: d.dynamic_loft_deg.map(|a| deg(lit(a))),
+        impact_height_m: d.impact_height_m.map(lit),
+    }
 }
 
 /// The ball of `p`, validated.
@@ -241,19 +261,14 @@ pub fn ball<T: Real>(p: &Params) -> Result<Ball<T>, InputError> {
 #[must_use]
 pub fn delivery<T: Real>(p: &Params, head: &ClubHead<T>) -> Delivery<T> {
     let d = &p.delivery;
-    // What the user did not give: the named club's typical delivery (the core's rule,
-    // `GivenDelivery::over` the `TypicalDelivery`), else the reference: square and centred
-    // at the default club speed and the static loft.
-    let given = carry_core::presets::GivenDelivery {
-        club_speed_mps: d.club_speed_given.then(|| lit(d.club_speed_mps)),
-        attack_angle_rad: d.attack_angle_deg.map(|a| deg(lit(a))),
-        dynamic_loft_rad: d.dynamic_loft_deg.map(|a| deg(lit(a))),
-        impact_height_m: d.impact_height_m.map(lit),
+    // What the user did not give: the named club's (the core's rule, `Preset::completed`),
+    // else the reference: square and centred at the default club speed and the static loft.
+    let given = given::<T>(p);
+    let mut out = if p.club.named {
+        p.club.preset.completed(&given, lit(p.ball_radius_m))
+    } else {
+        given.over(Delivery::square(lit(d.club_speed_mps), head))
     };
-    let mut out = given.over(typical(p).map_or_else(
-        || Delivery::square(lit(d.club_speed_mps), head),
-        carry_core::presets::TypicalDelivery::delivery::<T>,
-    ));
     out.club_path_rad = deg(lit(d.club_path_deg));
     out.face_angle_rad = deg(lit(d.face_angle_deg));
     out.lie_rad = deg(lit(d.lie_deg));

@@ -10,6 +10,7 @@
 //! friction = 0.4                     # μ ≥ 0, or "inf"
 //! tangential_restitution = 0.02      # e_t0 in [−1, 1]
 //! tangential_restitution_slope = 0.25
+//! tangential_restitution_max = 0.25  # e_t,max in [0, 1]
 //! restitution_speed_slope_spm = 0.003
 //! ```
 
@@ -29,6 +30,7 @@ pub fn fitted() -> CompliantContact<f64> {
             friction: f64::INFINITY,
             tangential_restitution: 0.0,
             tangential_restitution_slope: 0.0,
+            tangential_restitution_max: 1.0,
             restitution_speed_slope_spm: 0.0,
         },
     }
@@ -85,11 +87,13 @@ pub fn from_toml(body: &str) -> Result<ContactLaw<f64>, String> {
             "friction" => law.friction = number()?,
             "tangential_restitution" => law.tangential_restitution = number()?,
             "tangential_restitution_slope" => law.tangential_restitution_slope = number()?,
+            "tangential_restitution_max" => law.tangential_restitution_max = number()?,
             "restitution_speed_slope_spm" => law.restitution_speed_slope_spm = number()?,
             other => {
                 return Err(format!(
                     "unknown key '{other}' (keys: law, friction, tangential_restitution, \
-                     tangential_restitution_slope, restitution_speed_slope_spm)"
+                     tangential_restitution_slope, tangential_restitution_max, \
+                     restitution_speed_slope_spm)"
                 ));
             }
         }
@@ -119,6 +123,15 @@ mod tests {
         assert_eq!(from_toml("law = \"rolling\""), Ok(ContactLaw::Rolling));
         assert!(from_toml("friction = -1").is_err_and(|e| e.contains("friction")));
         assert!(from_toml("mu = 1").is_err_and(|e| e.contains("unknown key")));
+        assert_eq!(
+            from_toml("tangential_restitution_max = 0.3").map(
+                |l| matches!(l, ContactLaw::Compliant(c) if c.tangential_restitution_max == 0.3)
+            ),
+            Ok(true)
+        );
+        assert!(
+            from_toml("tangential_restitution_max = 1.2").is_err_and(|e| e.contains("ceiling"))
+        );
         assert!(from_toml("friction = ").is_err_and(|e| e.contains("TOML")));
         assert_eq!(
             from_toml("friction = \"inf\"")

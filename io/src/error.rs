@@ -116,6 +116,7 @@ pub fn field_key(field: Field) -> &'static str {
         Field::Friction
         | Field::TangentialRestitution
         | Field::TangentialRestitutionSlope
+        | Field::TangentialRestitutionMax
         | Field::RestitutionSpeedSlope => "contact",
         // LaunchPosition and Gravity are not options of the CLI (fixed tee, standard g),
         // nor is any field added to the core later.
@@ -178,6 +179,7 @@ impl From<Error> for InputError {
                     Field::Friction
                     | Field::TangentialRestitution
                     | Field::TangentialRestitutionSlope
+                    | Field::TangentialRestitutionMax
                     | Field::RestitutionSpeedSlope => format!("{} {reason}", field.name()),
                     Field::Pressure => {
                         format!(

@@ -69,6 +69,7 @@ fn laws<T: Real>() -> [ContactLaw<T>; 2] {
             friction: x(0.4),
             tangential_restitution: x(0.02),
             tangential_restitution_slope: x(0.25),
+            tangential_restitution_max: x(0.25),
             restitution_speed_slope_spm: x(0.003),
         }),
     ]

@@ -181,11 +181,13 @@ pub fn compliant_law() -> impl Strategy<Value = carry_core::impact::CompliantCon
         prop_oneof![Just(-1.0), Just(0.0), Just(1.0), -1.0..=1.0_f64],
         prop_oneof![Just(0.0), -3.0..3.0_f64],
         prop_oneof![Just(0.0), 0.0..0.03_f64],
+        prop_oneof![Just(1.0), Just(0.0), 0.0..=1.0_f64],
     )
-        .prop_map(|(mu, e0, s, k)| carry_core::impact::CompliantContact {
+        .prop_map(|(mu, e0, s, k, cap)| carry_core::impact::CompliantContact {
             friction: mu,
             tangential_restitution: e0,
             tangential_restitution_slope: s,
+            tangential_restitution_max: cap,
             restitution_speed_slope_spm: k,
         })
 }

@@ -99,6 +99,7 @@ impl Sampler {
             friction: self.weighted(&[0.0, f64::INFINITY], 0.0, 2.0),
             tangential_restitution: self.weighted(&[-1.0, 0.0, 1.0], -1.0, 1.0),
             tangential_restitution_slope: self.weighted(&[0.0], -3.0, 3.0),
+            tangential_restitution_max: self.weighted(&[1.0, 0.0], 0.0, 1.0),
             restitution_speed_slope_spm: self.weighted(&[0.0], 0.0, 0.03),
         };
         Scenario {
@@ -168,6 +169,7 @@ fn seed_like() -> CompliantContact<f64> {
         friction: f64::INFINITY,
         tangential_restitution: 0.0,
         tangential_restitution_slope: 0.0,
+        tangential_restitution_max: 1.0,
         restitution_speed_slope_spm: 0.0,
     }
 }
@@ -401,6 +403,7 @@ fn hard_cases<T: Real>() -> usize {
             friction: mu,
             tangential_restitution: e_t,
             tangential_restitution_slope: 2.0,
+            tangential_restitution_max: 1.0,
             restitution_speed_slope_spm: 0.01,
         })
     });
