@@ -44,13 +44,8 @@ struct Shot {
 
 fn rows() -> Result<Vec<Row>, String> {
     let mut lines = TOUR.lines();
-    let header: Vec<&str> = lines.next().ok_or("empty table")?.split(',').collect();
-    let col = |name: &str| {
-        header
-            .iter()
-            .position(|h| *h == name)
-            .ok_or(format!("no column {name}"))
-    };
+    let header = carry_lab::columns::Header::of(lines.next().ok_or("empty table")?);
+    let col = |name: &str| header.column(name);
     let (tour, club, speed, attack, ball, launch, spin, carry) = (
         col("tour")?,
         col("club")?,

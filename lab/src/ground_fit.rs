@@ -75,13 +75,8 @@ impl RollRow {
 /// A missing column or a number that does not parse.
 pub fn parse_chart(text: &str) -> Result<Vec<ChartRow>, String> {
     let mut lines = text.lines();
-    let header: Vec<&str> = lines.next().ok_or("empty chart")?.split(',').collect();
-    let col = |n: &str| {
-        header
-            .iter()
-            .position(|h| h.trim() == n)
-            .ok_or(format!("no column {n}"))
-    };
+    let header = crate::columns::Header::of(lines.next().ok_or("empty chart")?);
+    let col = |n: &str| header.column(n);
     let (club, attack, bs, la, spin, carry, total) = (
         col("club_speed_mph")?,
         col("attack_deg")?,

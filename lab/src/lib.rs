@@ -19,6 +19,7 @@
 
 /// The aerodynamic model files, now in [`carry_io`] (re-exported for existing paths).
 pub use carry_io::aero_file;
+pub mod columns;
 pub mod dispersion;
 pub mod error;
 pub mod fit;

@@ -69,18 +69,8 @@ pub struct DeliveryRow {
 /// A one-line message naming the line and column at fault.
 pub fn read_rows(text: &str) -> Result<Vec<DeliveryRow>, String> {
     let mut lines = text.lines().filter(|l| !l.trim().is_empty());
-    let header: Vec<&str> = lines
-        .next()
-        .ok_or("empty file")?
-        .split(',')
-        .map(str::trim)
-        .collect();
-    let col = |name: &str| {
-        header
-            .iter()
-            .position(|h| *h == name)
-            .ok_or(format!("no column '{name}'"))
-    };
+    let header = crate::columns::Header::of(lines.next().ok_or("empty file")?);
+    let col = |name: &str| header.column(name);
     let (club, speed, attack, loft, ball, launch, spin) = (
         col("club")?,
         col("club_speed_mph")?,
@@ -104,7 +94,7 @@ pub fn read_rows(text: &str) -> Result<Vec<DeliveryRow>, String> {
                     .ok_or(format!(
                         "line {}: {}: '{}' is not a number",
                         i + 2,
-                        header[c],
+                        header.name(c),
                         at(c)
                     ))
             };
