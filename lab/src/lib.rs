@@ -12,6 +12,7 @@
 //!   positions; the example swing's generator (a planar double pendulum).
 //! * [`dispersion`]: Monte-Carlo over delivery noise, landing statistics and ellipse.
 //! * [`normalize`]: the carry of a launch in standard conditions, and back.
+//! * [`bag`]: the bag from delivery alone against TrackMan's 2023 tour averages.
 //!
 //! The command line (`carry-cli`) is a thin shell over this crate: it parses, calls, and
 //! formats; every analysis returns data (and renders tables or charts on request) rather
@@ -19,6 +20,7 @@
 
 /// The aerodynamic model files, now in [`carry_io`] (re-exported for existing paths).
 pub use carry_io::aero_file;
+pub mod bag;
 pub mod columns;
 pub mod dispersion;
 pub mod error;
