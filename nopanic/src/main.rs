@@ -121,6 +121,17 @@ fn impact_paths_with<T: Real>(law: ContactLaw<T>) -> T {
             toe_m: x(0.0),
         },
     );
+    // the named-club rule: a preset's typical delivery completed with a given loft (a flat
+    // face strikes at that loft's turf height)
+    let preset = &carry_core::PRESETS[black_box(3_usize) % carry_core::PRESETS.len()];
+    let named = preset.completed::<T>(
+        &carry_core::presets::GivenDelivery {
+            dynamic_loft_rad: Some(x(0.3)),
+            ..Default::default()
+        },
+        x(0.021_336),
+    );
+    acc += named.location.height_m + named.dynamic_loft_rad;
     // TrackMan's convention: the centre orientation derived from the contact point, and
     // back (`convention::centre_aim` / `at_contact_point` through `strike_in`)
     let convention = if black_box(true) {
