@@ -1118,6 +1118,29 @@ enum carry_error_t carry_delivery_typical_f32(const char *name, CarryDeliveryF32
 // As `carry_delivery_typical_f32`.
 enum carry_error_t carry_delivery_typical_f64(const char *name, CarryDeliveryF64 *out);
 
+// Where the preset named `name` strikes at dynamic loft `dynamic_loft_rad` when no strike
+// location is known (m up the face from its centre), as the CLI's `--club NAME
+// --dynamic-loft …` without `--impact-height`: a flat face (irons, wedges) where a ball of
+// radius `ball_radius_m` on firm turf meets it at that loft, a curved face its typical
+// strike. Set a delivery's `impact_height_m` from it after changing the typical loft;
+// single precision.
+//
+// # Safety
+// `name` is NULL or NUL-terminated; `out` is NULL or points to a writable float.
+enum carry_error_t carry_strike_height_f32(const char *name,
+                                           float dynamic_loft_rad,
+                                           float ball_radius_m,
+                                           float *out);
+
+// As `carry_strike_height_f32`, double precision.
+//
+// # Safety
+// As `carry_strike_height_f32`.
+enum carry_error_t carry_strike_height_f64(const char *name,
+                                           double dynamic_loft_rad,
+                                           double ball_radius_m,
+                                           double *out);
+
 // Impact: club delivery → ball launch, single precision. Writes `*out` on `CARRY_OK`
 // only.
 //

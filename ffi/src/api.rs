@@ -13,7 +13,8 @@ use crate::{
     CarrySampleF64, CarryShotInputF32, CarryShotInputF64, CarryShotResultF32, CarryShotResultF64,
 };
 use carry_core::presets::Preset;
-use carry_core::real::Real;
+use carry_core::real::{Real, lit};
+use carry_core::{Ball, Error, Field, Reason};
 use core::ffi::c_char;
 
 pub use crate::defaults::*;
@@ -142,6 +143,77 @@ pub unsafe extern "C" fn carry_delivery_typical_f64(
 ) -> CarryError {
     // SAFETY: the caller's contract, forwarded.
     preset_delivery(unsafe { preset_named(name) }, out)
+}
+
+/// The named-club rule's strike height (`carry_core::Preset::completed`): a flat face at
+/// the turf height of `loft`, a curved face its typical strike.
+fn strike_height<T: Real>(
+    preset: Result<&'static Preset>,
+    dynamic_loft_rad: T,
+    ball_radius_m: T,
+    out: *mut T,
+) -> CarryError {
+    code((|| {
+        let out = non_null(out)?;
+        let preset = preset?;
+        let ball = Ball::new(lit(Ball::<f64>::STANDARD_MASS_KG), ball_radius_m)?;
+        if !dynamic_loft_rad.is_finite() {
+            return Err(Error::invalid(Field::DynamicLoft, Reason::NotFinite).into());
+        }
+        let height = preset.strike_height_m(dynamic_loft_rad, ball.radius_m());
+        if !height.is_finite() {
+            // a radius near the precision's largest value overflows R (1 − sin δ)
+            return Err(Error::invalid(Field::BallRadius, Reason::OutOfRange).into());
+        }
+        // SAFETY: not NULL; writable by the caller's contract.
+        unsafe { write(out, height) };
+        Ok(())
+    })())
+}
+
+/// Where the preset named `name` strikes at dynamic loft `dynamic_loft_rad` when no strike
+/// location is known (m up the face from its centre), as the CLI's `--club NAME
+/// --dynamic-loft …` without `--impact-height`: a flat face (irons, wedges) where a ball of
+/// radius `ball_radius_m` on firm turf meets it at that loft, a curved face its typical
+/// strike. Set a delivery's `impact_height_m` from it after changing the typical loft;
+/// single precision.
+///
+/// # Safety
+/// `name` is NULL or NUL-terminated; `out` is NULL or points to a writable float.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn carry_strike_height_f32(
+    name: *const c_char,
+    dynamic_loft_rad: f32,
+    ball_radius_m: f32,
+    out: *mut f32,
+) -> CarryError {
+    // SAFETY: the caller's contract, forwarded.
+    strike_height(
+        unsafe { preset_named(name) },
+        dynamic_loft_rad,
+        ball_radius_m,
+        out,
+    )
+}
+
+/// As `carry_strike_height_f32`, double precision.
+///
+/// # Safety
+/// As `carry_strike_height_f32`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn carry_strike_height_f64(
+    name: *const c_char,
+    dynamic_loft_rad: f64,
+    ball_radius_m: f64,
+    out: *mut f64,
+) -> CarryError {
+    // SAFETY: the caller's contract, forwarded.
+    strike_height(
+        unsafe { preset_named(name) },
+        dynamic_loft_rad,
+        ball_radius_m,
+        out,
+    )
 }
 
 /// # Safety

@@ -422,7 +422,93 @@ fn presets_by_name_and_index_are_the_cores() {
     }
 }
 
+/// The named-club rule's strike height: the core's `Preset::completed` for every preset, both
+/// precisions; typed errors for a bad name, loft, radius or pointer.
+#[test]
+fn strike_height_is_the_named_club_rule() {
+    use carry_core::presets::GivenDelivery;
+    for (k, p) in PRESETS.iter().enumerate() {
+        let name = carry_club_preset_name(k as u32);
+        for loft in [0.0_f64, 0.25, 0.35, 0.8, 1.4] {
+            let (mut h64, mut h32) = (f64::NAN, f32::NAN);
+            // SAFETY: a static NUL-terminated name and writable floats.
+            unsafe {
+                assert_eq!(
+                    carry_strike_height_f64(name, loft, 0.021_336, &mut h64),
+                    CARRY_OK
+                );
+                assert_eq!(
+                    carry_strike_height_f32(name, loft as f32, 0.021_336, &mut h32),
+                    CARRY_OK
+                );
+            }
+            let given = GivenDelivery {
+                dynamic_loft_rad: Some(loft),
+                ..GivenDelivery::default()
+            };
+            assert_eq!(
+                h64,
+                p.completed(&given, 0.021_336).location.height_m,
+                "{}",
+                p.name
+            );
+            let given32 = GivenDelivery {
+                dynamic_loft_rad: Some(loft as f32),
+                ..GivenDelivery::default()
+            };
+            assert_eq!(h32, p.completed(&given32, 0.021_336_f32).location.height_m);
+        }
+    }
+    let mut h = 0.0_f64;
+    // SAFETY: NUL-terminated names; the NULL cases are the point.
+    unsafe {
+        assert_eq!(
+            carry_strike_height_f64(c"putter".as_ptr(), 0.3, 0.021, &mut h),
+            CARRY_ERR_UNKNOWN_NAME
+        );
+        assert_eq!(
+            carry_strike_height_f64(null(), 0.3, 0.021, &mut h),
+            CARRY_ERR_NULL_POINTER
+        );
+        assert_eq!(
+            carry_strike_height_f64(c"7iron".as_ptr(), 0.3, 0.021, null_mut()),
+            CARRY_ERR_NULL_POINTER
+        );
+        for (loft, radius) in [
+            (f64::NAN, 0.021),
+            (f64::INFINITY, 0.021),
+            (0.3, 0.0),
+            (0.3, f64::NAN),
+            (0.3, -1.0),
+            (-1.5, f64::MAX),
+        ] {
+            assert_eq!(
+                carry_strike_height_f64(c"7iron".as_ptr(), loft, radius, &mut h),
+                CARRY_ERR_INVALID_INPUT,
+                "{loft} {radius}"
+            );
+        }
+    }
+}
+
 proptest::proptest! {
+    /// Any finite loft and positive radius: a finite strike height, the core's; anything
+    /// else a typed error, never a NaN written.
+    #[test]
+    fn strike_height_is_finite_or_an_error(
+        k in 0_u32..13, loft in proptest::num::f64::ANY, radius in proptest::num::f64::ANY,
+    ) {
+        let mut h = 0.5_f64;
+        // SAFETY: a static NUL-terminated name and a writable float.
+        let code = unsafe { carry_strike_height_f64(carry_club_preset_name(k), loft, radius, &mut h) };
+        if code == CARRY_OK {
+            proptest::prop_assert!(h.is_finite());
+        } else {
+            proptest::prop_assert_eq!(code, CARRY_ERR_INVALID_INPUT);
+            proptest::prop_assert_eq!(h, 0.5);
+        }
+    }
+
     /// Any delivery: the C API's impact is the core's, bit for bit (or the same error).
     #[test]
     fn random_deliveries_bit_identical(

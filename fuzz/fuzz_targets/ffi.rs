@@ -210,10 +210,16 @@ trait Api: Real + Default {
         i: *const CarryEstimateInput<Self>,
         o: *mut CarryEstimateResult<Self>,
     ) -> CarryError;
+    unsafe fn strike_height(
+        name: *const core::ffi::c_char,
+        loft: Self,
+        radius: Self,
+        o: *mut Self,
+    ) -> CarryError;
 }
 
 macro_rules! api {
-    ($t:ty, $i:ident, $f:ident, $s:ident, $ed:ident, $e:ident) => {
+    ($t:ty, $i:ident, $f:ident, $s:ident, $ed:ident, $e:ident, $h:ident) => {
         impl Api for $t {
             unsafe fn impact(
                 i: *const CarryImpactInput<Self>,
@@ -251,6 +257,14 @@ macro_rules! api {
             ) -> CarryError {
                 unsafe { $e(i, o) }
             }
+            unsafe fn strike_height(
+                name: *const core::ffi::c_char,
+                loft: Self,
+                radius: Self,
+                o: *mut Self,
+            ) -> CarryError {
+                unsafe { $h(name, loft, radius, o) }
+            }
         }
     };
 }
@@ -260,7 +274,8 @@ api!(
     carry_flight_f32,
     carry_shot_f32,
     carry_estimate_input_default_f32,
-    carry_estimate_f32
+    carry_estimate_f32,
+    carry_strike_height_f32
 );
 api!(
     f64,
@@ -268,7 +283,8 @@ api!(
     carry_flight_f64,
     carry_shot_f64,
     carry_estimate_input_default_f64,
-    carry_estimate_f64
+    carry_estimate_f64,
+    carry_strike_height_f64
 );
 
 /// NULL (rarely) or the address of `x`.
@@ -284,6 +300,25 @@ fn delivery_data<T: Real>(b: &mut Bytes<'_>, d: &mut CarryDeliveryData<T>, scale
     d.impact_toe_m = f(b, -0.05 * scale, 0.05 * scale);
     d.impact_height_m = f(b, -0.05 * scale, 0.05 * scale);
     d.club_speed_mps = f(b, -5.0, 80.0 * scale);
+}
+
+/// The named-club rule's strike height for an arbitrary name, loft and ball radius: a
+/// finite height or a typed error, the output untouched on error.
+fn strike_height_op<T: Api>(b: &mut Bytes<'_>) -> CarryError {
+    let names = [c"driver", c"3wood", c"7iron", c"lw", c"putter"];
+    let name = names[usize::from(b.byte()) % names.len()];
+    let name = if b.byte() < 8 { null() } else { name.as_ptr() };
+    let (loft, radius) = (f::<T>(b, -4.0, 4.0), f::<T>(b, -0.01, 0.1));
+    let mut h = T::zero();
+    let hp = ptr_or_null(b, &mut h);
+    // SAFETY: NULL or a NUL-terminated name; NULL or a live value.
+    let code = unsafe { T::strike_height(name, loft, radius, hp) };
+    if code == CarryError::CARRY_OK {
+        assert!(h.is_finite(), "non-finite strike height {h:?}");
+    } else {
+        assert!(h == T::zero(), "written on error: {h:?}");
+    }
+    code
 }
 
 /// One estimate from a preset's defaults with arbitrary measurements and settings.
@@ -369,10 +404,18 @@ fn run<T: Api>(b: &mut Bytes<'_>) {
     };
     let mut count = usize::MAX;
     let np = ptr_or_null(b, &mut count);
-    // 252..=255 (which chose the three others before the estimator was added) estimate
+    // 252..=255 (which chose the three others before the estimator was added) estimate,
+    // 248..=251 the named-club strike height
     let op = b.byte();
-    let code = match if op >= 252 { 3 } else { op % 3 } {
+    let code = match if op >= 252 {
+        3
+    } else if op >= 248 {
+        4
+    } else {
+        op % 3
+    } {
         3 => estimate_op::<T>(b),
+        4 => strike_height_op::<T>(b),
         0 => {
             let mut i = CarryImpactInput::<T>::default();
             mutate_club(b, &mut i.club);

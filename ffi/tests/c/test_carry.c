@@ -120,6 +120,11 @@ static void presets(void) {
         CHECK_CODE(carry_shot_input_default_f64(&in), CARRY_OK);
         in.club = a;
         CHECK_CODE(carry_delivery_typical_f64(name, &in.delivery), CARRY_OK);
+        /* the named-club rule at the typical loft: the typical strike (to the table's 0.1 mm) */
+        double h = 1.0;
+        CHECK_CODE(carry_strike_height_f64(name, in.delivery.dynamic_loft_rad, 0.021336, &h),
+                   CARRY_OK);
+        CHECK(fabs(h - in.delivery.impact_height_m) < 6e-5);
         CHECK_CODE(carry_shot_f64(&in, NULL, 0, NULL, &out), CARRY_OK);
         CHECK(out.flight.carry_m > 0.0);
     }
@@ -128,6 +133,10 @@ static void presets(void) {
     CHECK_CODE(carry_club_preset_f32("putter", &c), CARRY_ERR_UNKNOWN_NAME);
     CHECK_CODE(carry_club_preset_index_f32(n, &c), CARRY_ERR_UNKNOWN_NAME);
     CHECK_CODE(carry_club_preset_f32(NULL, &c), CARRY_ERR_NULL_POINTER);
+    float h32 = 0.0f;
+    CHECK_CODE(carry_strike_height_f32("7iron", NAN, 0.021336f, &h32), CARRY_ERR_INVALID_INPUT);
+    CHECK_CODE(carry_strike_height_f32("putter", 0.3f, 0.021336f, &h32), CARRY_ERR_UNKNOWN_NAME);
+    CHECK_CODE(carry_strike_height_f32("7iron", 0.3f, 0.021336f, NULL), CARRY_ERR_NULL_POINTER);
 }
 
 static void bad_input(void) {

@@ -76,6 +76,21 @@ fn paths() -> u32 {
             name,
             opaque(&mut shot64.delivery),
         ));
+        let (mut h32, mut h64) = (opaque(0.0_f32), opaque(0.0_f64));
+        add(carry_strike_height_f32(
+            name,
+            opaque(0.35_f32),
+            opaque(0.021_336_f32),
+            opaque(&mut h32),
+        ));
+        add(carry_strike_height_f64(
+            name,
+            opaque(0.35_f64),
+            opaque(0.021_336_f64),
+            opaque(&mut h64),
+        ));
+        shot32.delivery.impact_height_m = h32;
+        shot64.delivery.impact_height_m = h64;
         add(carry_impact_f32(opaque(&impact32), opaque(&mut r_impact32)));
         add(carry_impact_f64(opaque(&impact64), opaque(&mut r_impact64)));
         add(carry_flight_f32(
