@@ -8,10 +8,11 @@
 //! (x out of the face; y up the face: a positive y is a face centre *above* the CoM, the
 //! source of vertical gear effect for centred strikes). Typical deliveries: club speed and
 //! attack angle are TrackMan's 2023 PGA Tour averages (`../shared/data/trackman_tour_2023.csv`;
-//! gap, sand and lob wedge extrapolated, marked); dynamic loft is TrackMan's where published
-//! (`club_delivery.csv`: driver 12.8°, 6-iron 20.2°), else the dynamic loft at which the
+//! gap, sand and lob wedge extrapolated with the PW's deloft, marked); dynamic loft is
+//! TrackMan's for the driver (`club_delivery.csv`: 12.8°), else the dynamic loft at which the
 //! calibrated model launches the ball at TrackMan's average launch angle for that club
-//! (`docs/impact.md`, "Typical deliveries").
+//! (`carry_lab::bag::matched_loft`, docs/impact.md §0.6: at TrackMan's measured 20.2° the
+//! 6-iron launches about 1° high).
 
 use crate::club::ClubSpec;
 use crate::convention::DeliveryConvention;
@@ -21,8 +22,9 @@ use crate::real::{Real, lit};
 use crate::units::{MPS_PER_MPH, deg};
 use nalgebra::{Matrix3, Vector3};
 
-/// The calibrated compliant contact every preset carries (fitted to
-/// `../shared/data/club_delivery.csv`, `docs/impact.md`).
+/// The calibrated compliant contact every preset carries: fitted to
+/// `../shared/data/club_delivery.csv` with TrackMan's 2010 driver chart held inside its
+/// test's bounds (docs/impact.md §0.6): e_t = min(−0.30 + 1.00 tan ψ, 0.22).
 pub const FITTED_CONTACT: ContactLaw<f64> = ContactLaw::Compliant(CompliantContact {
     friction: 0.40,
     tangential_restitution: -0.30,
