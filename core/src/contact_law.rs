@@ -324,13 +324,21 @@ impl ContactLaw<f64> {
     pub fn cast<T: Real>(&self) -> ContactLaw<T> {
         match self {
             Self::Rolling => ContactLaw::Rolling,
-            Self::Compliant(c) => ContactLaw::Compliant(CompliantContact {
-                friction: lit(c.friction),
-                tangential_restitution: lit(c.tangential_restitution),
-                tangential_restitution_slope: lit(c.tangential_restitution_slope),
-                tangential_restitution_max: lit(c.tangential_restitution_max),
-                restitution_speed_slope_spm: lit(c.restitution_speed_slope_spm),
-            }),
+            Self::Compliant(c) => ContactLaw::Compliant(c.cast()),
+        }
+    }
+}
+
+impl CompliantContact<f64> {
+    /// These parameters in precision `T` (each rounded to nearest).
+    #[must_use]
+    pub fn cast<T: Real>(&self) -> CompliantContact<T> {
+        CompliantContact {
+            friction: lit(self.friction),
+            tangential_restitution: lit(self.tangential_restitution),
+            tangential_restitution_slope: lit(self.tangential_restitution_slope),
+            tangential_restitution_max: lit(self.tangential_restitution_max),
+            restitution_speed_slope_spm: lit(self.restitution_speed_slope_spm),
         }
     }
 }

@@ -25,13 +25,16 @@ use nalgebra::{Matrix3, Vector3};
 /// The calibrated compliant contact every preset carries: fitted to
 /// `../shared/data/club_delivery.csv` with TrackMan's 2010 driver chart held inside its
 /// test's bounds (docs/impact.md §0.6): e_t = min(−0.30 + 1.00 tan ψ, 0.22).
-pub const FITTED_CONTACT: ContactLaw<f64> = ContactLaw::Compliant(CompliantContact {
+pub const FITTED_CONTACT: ContactLaw<f64> = ContactLaw::Compliant(FITTED_COMPLIANT);
+
+/// The parameters of [`FITTED_CONTACT`].
+pub const FITTED_COMPLIANT: CompliantContact<f64> = CompliantContact {
     friction: 0.40,
     tangential_restitution: -0.30,
     tangential_restitution_slope: 1.00,
     tangential_restitution_max: 0.22,
     restitution_speed_slope_spm: 0.0027,
-});
+};
 
 /// A typical delivery of a club (launch-monitor terms; centred and square).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -474,7 +477,7 @@ impl Preset {
     #[must_use]
     pub fn completed<T: Real>(&self, given: &GivenDelivery<T>, ball_radius_m: T) -> Delivery<T> {
         let mut given = *given;
-        if given.impact_height_m.is_none() && !self.roll_radius_m.is_finite() {
+        if given.impact_height_m.is_none() {
             given.impact_height_m = given
                 .dynamic_loft_rad
                 .map(|loft| self.strike_height_m(loft, ball_radius_m));

@@ -132,16 +132,7 @@ impl<T: Real> CarryClub<T> {
 /// The calibrated compliant parameters, stored even in a rolling club so that switching
 /// `contact` to compliant gives the presets' law.
 fn compliant_off<T: Real>() -> CompliantContact<T> {
-    match carry_core::presets::FITTED_CONTACT.cast() {
-        ContactLaw::Compliant(c) => c,
-        ContactLaw::Rolling => CompliantContact {
-            friction: T::zero(),
-            tangential_restitution: T::zero(),
-            tangential_restitution_slope: T::zero(),
-            tangential_restitution_max: T::one(),
-            restitution_speed_slope_spm: T::zero(),
-        },
-    }
+    carry_core::presets::FITTED_COMPLIANT.cast()
 }
 
 impl<T: Real> CarryBall<T> {

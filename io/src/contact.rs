@@ -14,27 +14,12 @@
 //! restitution_speed_slope_spm = 0.003
 //! ```
 
-use carry_core::impact::{CompliantContact, ContactLaw};
-use carry_core::presets::FITTED_CONTACT;
+use carry_core::impact::ContactLaw;
+use carry_core::presets::{FITTED_COMPLIANT, FITTED_CONTACT};
 use std::path::Path;
 
 /// The contact-law names, for messages and `--help`.
 pub const NAMES: &str = "rolling, compliant (= fitted)";
-
-/// The fitted compliant law's parameters.
-#[must_use]
-pub fn fitted() -> CompliantContact<f64> {
-    match FITTED_CONTACT {
-        ContactLaw::Compliant(c) => c,
-        ContactLaw::Rolling => CompliantContact {
-            friction: f64::INFINITY,
-            tangential_restitution: 0.0,
-            tangential_restitution_slope: 0.0,
-            tangential_restitution_max: 1.0,
-            restitution_speed_slope_spm: 0.0,
-        },
-    }
-}
 
 /// A contact law by name, or from a TOML file (a name ending in `.toml`).
 ///
@@ -66,7 +51,7 @@ pub fn from_toml(body: &str) -> Result<ContactLaw<f64>, String> {
     let table: toml::Table = body.parse().map_err(|e: toml::de::Error| {
         format!("not valid TOML: {}", e.message().replace('\n', " ").trim())
     })?;
-    let mut law = fitted();
+    let mut law = FITTED_COMPLIANT;
     let mut rolling = false;
     for (name, value) in &table {
         let number = || -> Result<f64, String> {
@@ -119,7 +104,10 @@ mod tests {
             panic!("toml")
         };
         assert_eq!(c.friction, 0.3);
-        assert_eq!(c.tangential_restitution, fitted().tangential_restitution);
+        assert_eq!(
+            c.tangential_restitution,
+            FITTED_COMPLIANT.tangential_restitution
+        );
         assert_eq!(from_toml("law = \"rolling\""), Ok(ContactLaw::Rolling));
         assert!(from_toml("friction = -1").is_err_and(|e| e.contains("friction")));
         assert!(from_toml("mu = 1").is_err_and(|e| e.contains("unknown key")));

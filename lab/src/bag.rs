@@ -78,17 +78,16 @@ impl BagShot {
 pub fn tour_rows() -> Result<Vec<TourRow>, String> {
     let mut lines = TOUR_2023.lines();
     let header = Header::of(lines.next().ok_or("empty table")?);
-    let col = |name: &str| header.column(name);
-    let (tour, club, speed, attack, ball, launch, spin, carry) = (
-        col("tour")?,
-        col("club")?,
-        col("club_speed_mph")?,
-        col("attack_deg")?,
-        col("ball_speed_mph")?,
-        col("launch_deg")?,
-        col("spin_rpm")?,
-        col("carry_yd")?,
-    );
+    let [tour, club, speed, attack, ball, launch, spin, carry] = header.columns([
+        "tour",
+        "club",
+        "club_speed_mph",
+        "attack_deg",
+        "ball_speed_mph",
+        "launch_deg",
+        "spin_rpm",
+        "carry_yd",
+    ])?;
     let mut out = Vec::new();
     for line in lines.filter(|l| !l.trim().is_empty()) {
         let f: Vec<&str> = line.split(',').map(str::trim).collect();

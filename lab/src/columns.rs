@@ -23,6 +23,18 @@ impl<'a> Header<'a> {
             .ok_or(format!("no column '{name}'"))
     }
 
+    /// The indices of columns `names`, in order.
+    ///
+    /// # Errors
+    /// `no column 'name'` for the first one missing.
+    pub fn columns<const N: usize>(&self, names: [&str; N]) -> Result<[usize; N], String> {
+        let mut out = [0; N];
+        for (i, name) in out.iter_mut().zip(names) {
+            *i = self.column(name)?;
+        }
+        Ok(out)
+    }
+
     /// The name of column `i` (empty past the end).
     #[must_use]
     pub fn name(&self, i: usize) -> &'a str {
@@ -41,5 +53,7 @@ mod tests {
         assert_eq!(h.name(2), "c");
         assert_eq!(h.name(3), "");
         assert_eq!(h.column("d"), Err("no column 'd'".to_owned()));
+        assert_eq!(h.columns(["c", "a"]), Ok([2, 0]));
+        assert_eq!(h.columns(["a", "e"]), Err("no column 'e'".to_owned()));
     }
 }

@@ -76,16 +76,15 @@ impl RollRow {
 pub fn parse_chart(text: &str) -> Result<Vec<ChartRow>, String> {
     let mut lines = text.lines();
     let header = crate::columns::Header::of(lines.next().ok_or("empty chart")?);
-    let col = |n: &str| header.column(n);
-    let (club, attack, bs, la, spin, carry, total) = (
-        col("club_speed_mph")?,
-        col("attack_deg")?,
-        col("ball_speed_mph")?,
-        col("launch_deg")?,
-        col("spin_rpm")?,
-        col("carry_yd")?,
-        col("total_yd")?,
-    );
+    let [club, attack, bs, la, spin, carry, total] = header.columns([
+        "club_speed_mph",
+        "attack_deg",
+        "ball_speed_mph",
+        "launch_deg",
+        "spin_rpm",
+        "carry_yd",
+        "total_yd",
+    ])?;
     lines
         .filter(|l| !l.trim().is_empty())
         .map(|l| {

@@ -16,7 +16,7 @@
 //! and μ does not change a prediction (its Jacobian column is zero).
 
 use carry_core::impact::{self, CompliantContact, ContactLaw, Solver};
-use carry_core::presets::FITTED_CONTACT;
+use carry_core::presets::FITTED_COMPLIANT;
 use carry_core::presets::TypicalDelivery;
 use carry_core::units::{deg, mph, to_deg, to_rpm};
 use carry_core::{Ball, ClubSpec, DeliveryConvention, Preset};
@@ -70,17 +70,16 @@ pub struct DeliveryRow {
 pub fn read_rows(text: &str) -> Result<Vec<DeliveryRow>, String> {
     let mut lines = text.lines().filter(|l| !l.trim().is_empty());
     let header = crate::columns::Header::of(lines.next().ok_or("empty file")?);
-    let col = |name: &str| header.column(name);
-    let (club, speed, attack, loft, ball, launch, spin) = (
-        col("club")?,
-        col("club_speed_mph")?,
-        col("attack_deg")?,
-        col("dynamic_loft_deg")?,
-        col("ball_speed_mph")?,
-        col("launch_deg")?,
-        col("spin_rpm")?,
-    );
-    let who = col("who").ok();
+    let [club, speed, attack, loft, ball, launch, spin] = header.columns([
+        "club",
+        "club_speed_mph",
+        "attack_deg",
+        "dynamic_loft_deg",
+        "ball_speed_mph",
+        "launch_deg",
+        "spin_rpm",
+    ])?;
+    let who = header.column("who").ok();
     lines
         .enumerate()
         .map(|(i, line)| {
@@ -191,12 +190,7 @@ impl ContactProblem {
         match law {
             ContactLaw::Rolling => None,
             ContactLaw::Compliant(c) => {
-                let p = vec![
-                    c.tangential_restitution,
-                    c.tangential_restitution_slope,
-                    c.tangential_restitution_max,
-                    c.restitution_speed_slope_spm,
-                ];
+                let p = parameters(c);
                 Some((
                     Self {
                         initial: p.clone(),
@@ -209,19 +203,20 @@ impl ContactProblem {
     }
 }
 
+/// The family's parameters of `c`, in [`PARAMETERS`] order (the inverse of [`law`]).
+fn parameters(c: &CompliantContact<f64>) -> Vec<f64> {
+    vec![
+        c.tangential_restitution,
+        c.tangential_restitution_slope,
+        c.tangential_restitution_max,
+        c.restitution_speed_slope_spm,
+    ]
+}
+
 impl Default for ContactProblem {
     fn default() -> Self {
-        let initial = match FITTED_CONTACT {
-            ContactLaw::Compliant(c) => vec![
-                c.tangential_restitution,
-                c.tangential_restitution_slope,
-                c.tangential_restitution_max,
-                c.restitution_speed_slope_spm,
-            ],
-            ContactLaw::Rolling => vec![0.0, 0.0, 1.0, 0.0],
-        };
         Self {
-            initial,
+            initial: parameters(&FITTED_COMPLIANT),
             friction: FRICTION,
         }
     }
@@ -313,6 +308,7 @@ pub fn to_toml(contact: &ContactLaw<f64>, comment: &str) -> String {
 mod tests {
     use super::super::{FitOptions, fit};
     use super::*;
+    use carry_core::presets::FITTED_CONTACT;
 
     const DATA: &str = include_str!("../../../tests/data/club_delivery.csv");
 
