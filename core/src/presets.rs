@@ -10,9 +10,9 @@
 //! attack angle are TrackMan's 2023 PGA Tour averages (`../shared/data/trackman_tour_2023.csv`;
 //! gap, sand and lob wedge extrapolated with the PW's deloft, marked); dynamic loft is
 //! TrackMan's for the driver (`club_delivery.csv`: 12.8°), else the dynamic loft at which the
-//! calibrated model launches the ball at TrackMan's average launch angle for that club
-//! (`carry_lab::bag::matched_loft`, docs/impact.md §0.6: at TrackMan's measured 20.2° the
-//! 6-iron launches about 1° high).
+//! calibrated model's ball speed, launch and spin fit TrackMan's averages for that club best
+//! (issue 11's cost: `carry_lab::bag::fitted_loft`, docs/impact.md §0.7; the 6-iron's 20.1°
+//! against TrackMan's measured 20.2°).
 
 use crate::club::ClubSpec;
 use crate::convention::DeliveryConvention;
@@ -241,7 +241,7 @@ pub const PRESETS: [Preset; 13] = [
         typical: TypicalDelivery {
             club_speed_mps: 110.0 * MPS_PER_MPH,
             attack_angle_deg: -2.3,
-            dynamic_loft_deg: 11.7,
+            dynamic_loft_deg: 12.1,
             impact_height_m: -0.002,
         },
     },
@@ -260,7 +260,7 @@ pub const PRESETS: [Preset; 13] = [
         typical: TypicalDelivery {
             club_speed_mps: 102.0 * MPS_PER_MPH,
             attack_angle_deg: -2.4,
-            dynamic_loft_deg: 12.8,
+            dynamic_loft_deg: 14.5,
             impact_height_m: -0.002,
         },
     },
@@ -279,8 +279,8 @@ pub const PRESETS: [Preset; 13] = [
         typical: TypicalDelivery {
             club_speed_mps: 98.0 * MPS_PER_MPH,
             attack_angle_deg: -2.9,
-            dynamic_loft_deg: 13.9,
-            impact_height_m: -0.0038,
+            dynamic_loft_deg: 15.5,
+            impact_height_m: -0.0044,
         },
     },
     Preset {
@@ -298,8 +298,8 @@ pub const PRESETS: [Preset; 13] = [
         typical: TypicalDelivery {
             club_speed_mps: 96.0 * MPS_PER_MPH,
             attack_angle_deg: -3.4,
-            dynamic_loft_deg: 15.6,
-            impact_height_m: -0.0044,
+            dynamic_loft_deg: 17.2,
+            impact_height_m: -0.005,
         },
     },
     Preset {
@@ -317,8 +317,8 @@ pub const PRESETS: [Preset; 13] = [
         typical: TypicalDelivery {
             club_speed_mps: 94.0 * MPS_PER_MPH,
             attack_angle_deg: -3.7,
-            dynamic_loft_deg: 18.7,
-            impact_height_m: -0.0055,
+            dynamic_loft_deg: 20.1,
+            impact_height_m: -0.006,
         },
     },
     Preset {
@@ -336,8 +336,8 @@ pub const PRESETS: [Preset; 13] = [
         typical: TypicalDelivery {
             club_speed_mps: 92.0 * MPS_PER_MPH,
             attack_angle_deg: -3.9,
-            dynamic_loft_deg: 22.0,
-            impact_height_m: -0.0067,
+            dynamic_loft_deg: 23.6,
+            impact_height_m: -0.0072,
         },
     },
     Preset {
@@ -355,8 +355,8 @@ pub const PRESETS: [Preset; 13] = [
         typical: TypicalDelivery {
             club_speed_mps: 89.0 * MPS_PER_MPH,
             attack_angle_deg: -4.2,
-            dynamic_loft_deg: 24.8,
-            impact_height_m: -0.0076,
+            dynamic_loft_deg: 25.7,
+            impact_height_m: -0.0079,
         },
     },
     Preset {
@@ -374,8 +374,8 @@ pub const PRESETS: [Preset; 13] = [
         typical: TypicalDelivery {
             club_speed_mps: 87.0 * MPS_PER_MPH,
             attack_angle_deg: -4.3,
-            dynamic_loft_deg: 28.0,
-            impact_height_m: -0.0087,
+            dynamic_loft_deg: 28.8,
+            impact_height_m: -0.0089,
         },
     },
     Preset {
@@ -393,8 +393,8 @@ pub const PRESETS: [Preset; 13] = [
         typical: TypicalDelivery {
             club_speed_mps: 84.0 * MPS_PER_MPH,
             attack_angle_deg: -4.7,
-            dynamic_loft_deg: 33.8,
-            impact_height_m: -0.0105,
+            dynamic_loft_deg: 32.9,
+            impact_height_m: -0.0103,
         },
     },
     Preset {
@@ -412,8 +412,8 @@ pub const PRESETS: [Preset; 13] = [
         typical: TypicalDelivery {
             club_speed_mps: 80.0 * MPS_PER_MPH,
             attack_angle_deg: -4.8,
-            dynamic_loft_deg: 37.8,
-            impact_height_m: -0.0117,
+            dynamic_loft_deg: 36.9,
+            impact_height_m: -0.0115,
         },
     },
     Preset {
@@ -431,8 +431,8 @@ pub const PRESETS: [Preset; 13] = [
         typical: TypicalDelivery {
             club_speed_mps: 76.0 * MPS_PER_MPH,
             attack_angle_deg: -5.0,
-            dynamic_loft_deg: 43.8,
-            impact_height_m: -0.0134,
+            dynamic_loft_deg: 42.9,
+            impact_height_m: -0.0132,
         },
     },
     Preset {
@@ -450,8 +450,8 @@ pub const PRESETS: [Preset; 13] = [
         typical: TypicalDelivery {
             club_speed_mps: 72.0 * MPS_PER_MPH,
             attack_angle_deg: -5.0,
-            dynamic_loft_deg: 45.8,
-            impact_height_m: -0.014,
+            dynamic_loft_deg: 44.9,
+            impact_height_m: -0.0137,
         },
     },
 ];

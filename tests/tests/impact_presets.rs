@@ -1,8 +1,10 @@
 //! The presets at their typical deliveries against TrackMan's 2023 PGA Tour averages
 //! (`tests/data/trackman_tour_2023.csv`, a verbatim copy of `../shared/data/`): a driver,
 //! woods, hybrid and irons a golfer would recognise. Dynamic lofts (except the driver's
-//! published one) were chosen so that launch matches, so the informative checks are ball
-//! speed and spin; the table prints with `-- --nocapture`.
+//! published one) are the ones whose ball speed, launch and spin fit TrackMan's best together
+//! (issue 11's cost, `carry_lab::bag::fitted_loft`, docs/impact.md §0.7), so all three are
+//! checked, as means against issue 11's targets and row by row; the table prints with
+//! `-- --nocapture`.
 
 use carry_core::impact::{self, Solver};
 use carry_core::presets::TYPICAL_CONVENTION;
@@ -10,10 +12,15 @@ use carry_core::units::{to_deg, to_mph, to_rpm};
 use carry_core::{Ball, Preset};
 use carry_tests::club_delivery::{Row, RowError};
 
-/// |launch − TrackMan| (degrees): the driver's published dynamic loft is not tuned to it.
-const LAUNCH_DEG: f64 = 0.6;
-/// |ball speed / TrackMan − 1|: the iron COR estimates run high by up to 4 %.
-const SPEED_REL: f64 = 0.045;
+/// Issue 11's targets on the mean |error| over the ten clubs: ball speed, launch (degrees),
+/// spin.
+const MEAN: (f64, f64, f64) = (0.02, 1.0, 0.10);
+/// |launch − TrackMan| (degrees) of any club: the fitted lofts leave the woods and long irons
+/// 0.9–1.4° high (the launch TrackMan's tour rows imply lies 0.7–0.9° below their measured
+/// loft, docs/impact.md §0.7).
+const LAUNCH_DEG: f64 = 1.5;
+/// |ball speed / TrackMan − 1| of any club (PGA driver −3.3 %, irons up to +2.5 %).
+const SPEED_REL: f64 = 0.035;
 /// |spin / TrackMan − 1|: worst are the driver (+29 %) and the hybrid (−22 %, an estimated
 /// head). Issue 11 held 25 %; the PGA 2023 driver average (2,545 rpm at 115 mph and 13.7° spin
 /// loft) lies 26 % below TrackMan's own 2010 driver chart at the same speed and spin loft
@@ -32,6 +39,7 @@ const CHART_SPIN_REL: (f64, f64) = (0.06, 0.12);
 fn presets_reproduce_the_tour_averages() {
     let text = include_str!("../data/trackman_tour_2023.csv");
     let mut checked = 0;
+    let mut mean = (0.0, 0.0, 0.0);
     for line in text.lines().skip(1) {
         let f: Vec<&str> = line.split(',').collect();
         if f.first() != Some(&"PGA") {
@@ -76,9 +84,22 @@ fn presets_reproduce_the_tour_averages() {
             p.name
         );
         assert!((sp / spin - 1.0).abs() <= SPIN_REL, "{}: spin {sp}", p.name);
+        mean.0 += (s / speed - 1.0).abs() / 10.0;
+        mean.1 += (la - launch).abs() / 10.0;
+        mean.2 += (sp / spin - 1.0).abs() / 10.0;
         checked += 1;
     }
     assert_eq!(checked, 10, "driver, 3wood, hybrid, 4-9 iron, pw");
+    println!(
+        "mean |err|: ball speed {:.2} %, launch {:.2}°, spin {:.1} %",
+        mean.0 * 100.0,
+        mean.1,
+        mean.2 * 100.0
+    );
+    assert!(
+        mean.0 <= MEAN.0 && mean.1 <= MEAN.1 && mean.2 <= MEAN.2,
+        "{mean:?}"
+    );
 }
 
 /// The `driver` preset, struck where its typical delivery says, against TrackMan's 2010 driver
