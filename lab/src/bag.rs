@@ -159,19 +159,6 @@ fn strike(
     Ok((to_deg(delivery.dynamic_loft_rad), out))
 }
 
-/// The launch of `preset` struck with `contact` ([`strike`]), not flown: carry is NaN.
-///
-/// # Errors
-/// The core's error, as a message.
-pub fn launch(
-    preset: &Preset,
-    contact: &ContactLaw<f64>,
-    given: &GivenDelivery<f64>,
-) -> Result<BagShot, String> {
-    let (dynamic_loft_deg, out) = strike(preset, contact, given)?;
-    Ok(launch_of(dynamic_loft_deg, &out))
-}
-
 /// The launch numbers of an impact's outcome (carry NaN).
 fn launch_of(dynamic_loft_deg: f64, out: &impact::ImpactOutcome<f64>) -> BagShot {
     BagShot {
@@ -183,7 +170,7 @@ fn launch_of(dynamic_loft_deg: f64, out: &impact::ImpactOutcome<f64>) -> BagShot
     }
 }
 
-/// Strikes and flies `preset` with `contact` in `scene`: [`launch`] and the carry.
+/// Strikes and flies `preset` with `contact` in `scene`: the launch and the carry.
 ///
 /// # Errors
 /// The core's error, as a message.
@@ -233,7 +220,8 @@ pub fn fitted_loft(row: &TourRow, contact: &ContactLaw<f64>) -> Result<f64, Stri
     let mut best = (f64::INFINITY, f64::NAN);
     for tenth in 20..=600_u32 {
         let loft = f64::from(tenth) / 10.0;
-        let cost = launch_cost(&launch(row.preset, contact, &given(row, loft))?, row);
+        let (struck_deg, out) = strike(row.preset, contact, &given(row, loft))?;
+        let cost = launch_cost(&launch_of(struck_deg, &out), row);
         if cost < best.0 {
             best = (cost, loft);
         }
