@@ -113,12 +113,16 @@ impl HopForces {
 ///   landing predicted with `a₀` (`j = (a₁ − a₀)/τ₁`) and in the middle of that hop, and
 ///   the acceleration is quadratic in time through the three.
 ///
-/// `None` when the force does not pull the ball back to the plane.
+/// `None` when the force does not pull the ball back to the plane with at least
+/// `min_pull_mps2` (m/s², along −n̂): a hop the air holds up for many times its vacuum time
+/// is not low, and the short-time force model would be extrapolated far past where it holds
+/// (the integrator takes it).
 pub(crate) fn low_hop<T: Real, H: Hopper<T>, N: Normal<T>>(
     from: &Contact<T>,
     n: N,
     hopper: &H,
     form: HopForces,
+    min_pull_mps2: T,
     stats: &mut Stats,
     recorder: Option<&mut Recorder<'_, T>>,
 ) -> Option<Contact<T>> {
@@ -144,7 +148,7 @@ pub(crate) fn low_hop<T: Real, H: Hopper<T>, N: Normal<T>>(
     let two = lit::<T>(2.0);
     // First guess: the parabola of the initial force.
     let an = n.dot(&a0);
-    if !(an < T::zero()) {
+    if !(an < -min_pull_mps2) {
         return None;
     }
     let half = lit::<T>(0.5);
@@ -622,7 +626,7 @@ mod tests {
                 let from = leaving(v, w);
                 let mut stats = Stats::default();
                 let form = HopForces::for_wind(hops.wind_varies());
-                let Some(closed) = low_hop(&from, n, &hops, form, &mut stats, None) else {
+                let Some(closed) = low_hop(&from, n, &hops, form, 0.0, &mut stats, None) else {
                     panic!("closed form {v:?}")
                 };
                 assert_eq!(stats.force_evaluations, evaluations);
