@@ -2,37 +2,13 @@
 //! option's bad-input path (one stderr line, status 2), batch, plots, units and the table
 //! layout (snapshot).
 
-use assert_cmd::Command;
+mod common;
+
 use carry_golden::{FlightCase, FlightExpected, ImpactCase};
+use common::{carry, json, run, temp_file};
 use serde_json::Value;
-use std::path::PathBuf;
 
 // ---------------------------------------------------------------- helpers
-
-fn carry() -> Command {
-    Command::cargo_bin("carry").expect("the carry binary is built")
-}
-
-struct Run {
-    code: i32,
-    stdout: String,
-    stderr: String,
-}
-
-fn run(args: &[&str]) -> Run {
-    let out = carry().args(args).output().expect("carry runs");
-    Run {
-        code: out.status.code().unwrap_or(-1),
-        stdout: String::from_utf8_lossy(&out.stdout).into_owned(),
-        stderr: String::from_utf8_lossy(&out.stderr).into_owned(),
-    }
-}
-
-fn json(args: &[&str]) -> Value {
-    let r = run(args);
-    assert_eq!(r.code, 0, "carry {args:?} failed: {}", r.stderr);
-    serde_json::from_str(&r.stdout).expect("stdout is JSON")
-}
 
 fn num(v: &Value) -> f64 {
     match v {
@@ -53,14 +29,6 @@ fn arg(x: f64) -> String {
 
 fn arg3(v: [f64; 3]) -> String {
     format!("{},{},{}", arg(v[0]), arg(v[1]), arg(v[2]))
-}
-
-fn temp_file(name: &str, contents: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("carry-cli-tests-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    let path = dir.join(name);
-    std::fs::write(&path, contents).expect("temp file");
-    path
 }
 
 #[track_caller]

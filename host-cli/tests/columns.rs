@@ -2,11 +2,12 @@
 //! reads standard input, so `carry batch impact --input d.csv | carry batch flight --input -`
 //! works — and flies exactly the launch the impact wrote.
 
-use assert_cmd::Command;
+mod common;
+
+use common::carry;
 
 fn batch(mode: &str, extra: &[&str], stdin: &str) -> (String, String) {
-    let out = Command::cargo_bin("carry")
-        .expect("the carry binary is built")
+    let out = carry()
         .args(["batch", mode, "--input", "-"])
         .args(extra)
         .write_stdin(stdin.to_owned())
@@ -48,8 +49,7 @@ fn column<'a>(t: &'a (Vec<String>, Vec<Vec<String>>), name: &str) -> Vec<&'a str
 }
 
 fn flight_json(args: &[String]) -> serde_json::Value {
-    let out = Command::cargo_bin("carry")
-        .expect("the carry binary is built")
+    let out = carry()
         .arg("flight")
         .args(args)
         .arg("--json")

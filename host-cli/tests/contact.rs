@@ -1,35 +1,10 @@
 //! `--contact` and the presets' typical deliveries through the `carry` binary.
 
-use assert_cmd::Command;
+mod common;
+
+use common::{Run, json, run, temp_file};
 use serde_json::Value;
 use std::path::PathBuf;
-
-fn run(args: &[&str]) -> (i32, String, String) {
-    let out = Command::cargo_bin("carry")
-        .expect("the carry binary is built")
-        .args(args)
-        .output()
-        .expect("carry runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
-
-fn json(args: &[&str]) -> Value {
-    let (code, out, err) = run(args);
-    assert_eq!(code, 0, "carry {args:?}: {err}");
-    serde_json::from_str(&out).expect("JSON")
-}
-
-fn temp_file(name: &str, contents: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("carry-contact-tests-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    let path = dir.join(name);
-    std::fs::write(&path, contents).expect("temp file");
-    path
-}
 
 fn launch(v: &Value, key: &str) -> f64 {
     v["launch"][key].as_f64().expect("number")
@@ -102,7 +77,9 @@ fn bad_contact_is_one_line_and_status_2() {
         vec!["impact", "--contact", "/nonexistent/contact.toml"],
         vec!["impact", "--solver", "full"],
     ] {
-        let (code, _, err) = run(&args);
+        let Run {
+            code, stderr: err, ..
+        } = run(&args);
         assert_eq!(code, 2, "{args:?}");
         assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
         assert!(err.starts_with("carry: --contact"), "{args:?}: {err}");
@@ -115,7 +92,9 @@ fn batch_takes_a_contact_column() {
         "contact.csv",
         "club_speed,contact\n45,rolling\n45,compliant\n45,sticky\n",
     );
-    let (code, out, _) = run(&[
+    let Run {
+        code, stdout: out, ..
+    } = run(&[
         "batch",
         "impact",
         "--input",
@@ -210,7 +189,9 @@ fn fit_compliant_family_evaluates_the_default() {
     assert!((summary(1, "mean_abs") - 0.55).abs() < 0.01);
     assert!((summary(2, "mean_abs_pct") - 5.45).abs() < 0.01);
     assert!(summary(2, "max_abs_pct") <= 30.0);
-    let (code, _, err) = run(&[
+    let Run {
+        code, stderr: err, ..
+    } = run(&[
         "fit",
         "--family",
         "compliant",

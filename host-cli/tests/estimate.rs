@@ -1,27 +1,10 @@
 //! `carry estimate` end to end (issue 23): `carry impact` forward, `carry estimate` back —
 //! the estimate reproduces the launch and names its data; bad input is one line, status 2.
 
-use assert_cmd::Command;
+mod common;
+
+use common::{Run, json, run};
 use serde_json::Value;
-
-fn run(args: &[&str]) -> (i32, String, String) {
-    let out = Command::cargo_bin("carry")
-        .expect("the carry binary is built")
-        .args(args)
-        .output()
-        .expect("carry runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
-
-fn json(args: &[&str]) -> Value {
-    let (code, stdout, stderr) = run(args);
-    assert_eq!(code, 0, "carry {args:?} failed: {stderr}");
-    serde_json::from_str(&stdout).expect("stdout is JSON")
-}
 
 fn num(v: &Value) -> f64 {
     v.as_f64().unwrap_or_else(|| panic!("not a number: {v}"))
@@ -91,13 +74,19 @@ fn estimate_inverts_impact() {
         "{e}"
     );
     // the table and the CSV run too
-    let (code, table, _) = run(&args[..args.len() - 1]);
+    let Run {
+        code,
+        stdout: table,
+        ..
+    } = run(&args[..args.len() - 1]);
     assert_eq!(code, 0);
     assert!(table.contains("face angle"), "{table}");
     let mut csv_args = args.to_vec();
     csv_args.pop();
     csv_args.push("--csv");
-    let (code, csv, _) = run(&csv_args);
+    let Run {
+        code, stdout: csv, ..
+    } = run(&csv_args);
     assert_eq!(code, 0);
     assert!(
         csv.lines()
@@ -123,7 +112,11 @@ fn estimate_rejects_bad_input_with_status_2() {
             "--posterior",
         ),
     ] {
-        let (code, stdout, stderr) = run(&args);
+        let Run {
+            code,
+            stdout,
+            stderr,
+        } = run(&args);
         assert_eq!(code, 2, "{args:?}: {stderr}");
         assert!(stdout.is_empty());
         assert_eq!(stderr.lines().count(), 1, "{stderr}");
@@ -145,7 +138,11 @@ fn batch_estimate_reads_launch_and_club_columns() {
     )
     .expect("write input");
     let path = input.to_string_lossy().into_owned();
-    let (code, csv, stderr) = run(&["batch", "estimate", "--club", "driver", "-i", &path]);
+    let Run {
+        code,
+        stdout: csv,
+        stderr,
+    } = run(&["batch", "estimate", "--club", "driver", "-i", &path]);
     assert_eq!(code, 0, "{stderr}");
     let mut lines = csv.lines();
     let header: Vec<&str> = lines.next().expect("header").split(',').collect();
@@ -213,7 +210,11 @@ fn batch_estimate_reads_a_per_row_club() {
     )
     .expect("write input");
     let path = input.to_string_lossy().into_owned();
-    let (code, csv, stderr) = run(&["batch", "estimate", "--club", "driver", "-i", &path]);
+    let Run {
+        code,
+        stdout: csv,
+        stderr,
+    } = run(&["batch", "estimate", "--club", "driver", "-i", &path]);
     assert_eq!(code, 0, "{stderr}");
     let mut lines = csv.lines();
     let header: Vec<&str> = lines.next().expect("header").split(',').collect();

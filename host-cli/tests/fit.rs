@@ -1,36 +1,11 @@
 //! `carry fit` and `--aero` end to end: the fit on the measured data, model files round
 //! trip, bad input is one line and status 2.
 
-use assert_cmd::Command;
+mod common;
+
+use common::{Run, json, run, temp_file};
 use serde_json::Value;
 use std::path::PathBuf;
-
-fn carry() -> Command {
-    Command::cargo_bin("carry").expect("the carry binary is built")
-}
-
-fn run(args: &[&str]) -> (i32, String, String) {
-    let out = carry().args(args).output().expect("carry runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
-
-fn json(args: &[&str]) -> Value {
-    let (code, out, err) = run(args);
-    assert_eq!(code, 0, "{err}");
-    serde_json::from_str(&out).expect("JSON")
-}
-
-fn tmp(name: &str, text: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("carry-fit-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    let p = dir.join(name);
-    std::fs::write(&p, text).expect("write");
-    p
-}
 
 fn tour_data() -> Option<String> {
     let p =
@@ -77,7 +52,7 @@ fn seed_shots() -> PathBuf {
             fl["land_angle_deg"].as_f64().unwrap_or(0.0)
         ));
     }
-    tmp("seed.csv", &csv)
+    temp_file("seed.csv", &csv)
 }
 
 #[test]
@@ -174,13 +149,15 @@ fn fits_the_tour_data_and_the_model_file_round_trips() {
             .unwrap_or_default()
     );
     // And flies.
-    let (code, _, err) = run(&["flight", "--aero", m]);
+    let Run {
+        code, stderr: err, ..
+    } = run(&["flight", "--aero", m]);
     assert_eq!(code, 0, "{err}");
 }
 
 #[test]
 fn a_model_file_flies_bit_for_bit_like_the_built_in() {
-    let file = tmp(
+    let file = temp_file(
         "q.toml",
         "family = \"quintavalla\"\ncd0 = 0.171\ncd_spin = 0.62\ncl0 = 0.083\ncl_spin = 0.885\ncm_spin = 0.0125\n",
     );
@@ -188,7 +165,7 @@ fn a_model_file_flies_bit_for_bit_like_the_built_in() {
     let b = json(&["flight", "--json", "--aero", "quintavalla"]);
     assert_eq!(a["flight"], b["flight"]);
     // Scene files name the model too (a relative path is relative to the scene file).
-    let scene = tmp("scene.toml", "aero = \"q.toml\"\n");
+    let scene = temp_file("scene.toml", "aero = \"q.toml\"\n");
     let c = json(&["flight", "--json", "--scene", scene.to_str().unwrap_or("")]);
     assert_eq!(c["flight"], b["flight"]);
     // The calibrated default is what no option gives.
@@ -200,13 +177,13 @@ fn a_model_file_flies_bit_for_bit_like_the_built_in() {
 
 #[test]
 fn bad_input_is_one_line_and_status_two() {
-    let bad_row = tmp(
+    let bad_row = temp_file(
         "bad.csv",
         "ball_speed,launch_angle,spin,carry\n70,12,2500,230\n70,twelve,2500,230\n",
     );
-    let no_carry = tmp("nocarry.csv", "ball_speed,launch_angle,spin\n70,12,2500\n");
-    let bad_model = tmp("bad.toml", "family = \"modern\"\ncl_max = -1\n");
-    let unknown_key = tmp("unknown.toml", "family = \"modern\"\ncl_maximum = 0.3\n");
+    let no_carry = temp_file("nocarry.csv", "ball_speed,launch_angle,spin\n70,12,2500\n");
+    let bad_model = temp_file("bad.toml", "family = \"modern\"\ncl_max = -1\n");
+    let unknown_key = temp_file("unknown.toml", "family = \"modern\"\ncl_maximum = 0.3\n");
     let cases: [(Vec<&str>, &str); 6] = [
         (
             vec!["fit", "--input", bad_row.to_str().unwrap_or("")],
@@ -240,7 +217,11 @@ fn bad_input_is_one_line_and_status_two() {
         ),
     ];
     for (args, needle) in cases {
-        let (code, out, err) = run(&args);
+        let Run {
+            code,
+            stdout: out,
+            stderr: err,
+        } = run(&args);
         assert_eq!(code, 2, "{args:?}: {err}");
         assert!(out.is_empty());
         assert_eq!(err.trim().lines().count(), 1, "{err}");
@@ -306,7 +287,9 @@ fn joins_inputs_with_also() {
         mean(&v),
         mean(&e)
     );
-    let (code, _, err) = run(&[
+    let Run {
+        code, stderr: err, ..
+    } = run(&[
         "fit",
         "--family",
         "compliant",

@@ -2,36 +2,9 @@
 //! ground, scene and ground files, batch columns, plots, and the bad-input paths (one
 //! stderr line, status 2).
 
-use assert_cmd::Command;
-use serde_json::Value;
-use std::path::PathBuf;
+mod common;
 
-fn run(args: &[&str]) -> (i32, String, String) {
-    let out = Command::cargo_bin("carry")
-        .expect("the carry binary is built")
-        .args(args)
-        .output()
-        .expect("carry runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
-
-fn json(args: &[&str]) -> Value {
-    let (code, out, err) = run(args);
-    assert_eq!(code, 0, "carry {args:?} failed: {err}");
-    serde_json::from_str(&out).expect("stdout is JSON")
-}
-
-fn temp_file(name: &str, contents: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("carry-ground-tests-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    let path = dir.join(name);
-    std::fs::write(&path, contents).expect("temp file");
-    path
-}
+use common::{Run, json, run, temp_file};
 
 const KEYS: [&str; 6] = [
     "total_m",
@@ -59,14 +32,14 @@ fn ground_outputs_only_with_a_ground_and_carry_unchanged() {
         "straight shot: total = carry + roll"
     );
     // CSV: the same keys as columns, only with a ground.
-    let (_, csv, _) = run(&["flight", "--csv"]);
+    let Run { stdout: csv, .. } = run(&["flight", "--csv"]);
     assert!(!csv.contains("total_m"));
-    let (_, csv, _) = run(&["flight", "--csv", "--ground", "green", "--stimp", "11"]);
+    let Run { stdout: csv, .. } = run(&["flight", "--csv", "--ground", "green", "--stimp", "11"]);
     let header = csv.lines().next().expect("header");
     assert!(header.ends_with(
         "total_m,roll_m,bounces,rest_position_m_x,rest_position_m_y,rest_position_m_z,time_to_rest_s,still_rolling"
     ));
-    let (_, table, _) = run(&["shot", "--ground", "rough"]);
+    let Run { stdout: table, .. } = run(&["shot", "--ground", "rough"]);
     assert!(table.contains("GROUND") && table.contains("total") && table.contains("bounces"));
 }
 
@@ -109,7 +82,11 @@ fn batch_has_ground_columns_when_the_input_names_a_ground() {
         "shots.csv",
         "ground,ball_speed\nfairway,70\ngreen,60\nsand,60\n",
     );
-    let (code, out, err) = run(&["batch", "flight", "--input", input.to_str().expect("utf8")]);
+    let Run {
+        code,
+        stdout: out,
+        stderr: err,
+    } = run(&["batch", "flight", "--input", input.to_str().expect("utf8")]);
     assert_eq!(code, 0, "{err}");
     let lines: Vec<_> = out.lines().collect();
     assert!(lines[0].contains("total_m,roll_m,bounces"));
@@ -158,7 +135,9 @@ fn bad_ground_input_is_one_line_and_status_2() {
     ] {
         let mut all = vec!["flight"];
         all.extend(args.iter());
-        let (code, _, err) = run(&all);
+        let Run {
+            code, stderr: err, ..
+        } = run(&all);
         assert_eq!(code, 2, "{all:?}: {err}");
         assert_eq!(err.lines().count(), 1, "{all:?}: {err}");
         assert!(
@@ -171,7 +150,11 @@ fn bad_ground_input_is_one_line_and_status_2() {
 #[test]
 fn plot_draws_the_run_out() {
     let out = temp_file("run.svg", "");
-    let (code, stdout, err) = run(&[
+    let Run {
+        code,
+        stdout,
+        stderr: err,
+    } = run(&[
         "plot",
         "flight",
         "--ground",
@@ -206,7 +189,11 @@ fn topped_launches_run_out_or_say_why() {
     assert_eq!(f["carry_m"].as_f64(), Some(0.0));
     let total = f["total_m"].as_f64().expect("a total");
     assert!(total > 10.0, "{total}");
-    let (code, stdout, err) = run(&["flight", "--launch-angle", "-2"]);
+    let Run {
+        code,
+        stdout,
+        stderr: err,
+    } = run(&["flight", "--launch-angle", "-2"]);
     assert_eq!(code, 2);
     assert!(stdout.is_empty());
     assert_eq!(err.lines().count(), 1, "{err}");
@@ -223,7 +210,9 @@ fn topped_launches_run_out_or_say_why() {
         "0.05",
     ]);
     assert!(teed["flight"]["carry_m"].as_f64().expect("carry") > 0.0);
-    let (code, _, err) = run(&["flight", "--tee-height", "-0.1"]);
+    let Run {
+        code, stderr: err, ..
+    } = run(&["flight", "--tee-height", "-0.1"]);
     assert_eq!(code, 2);
     assert!(err.contains("--tee-height"), "{err}");
 }

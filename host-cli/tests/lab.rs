@@ -1,33 +1,10 @@
 //! End-to-end tests of the lab commands: optimize, sweep, dispersion, normalize — JSON
 //! names, self-consistency with `carry shot`, and one-line errors with status 2.
 
-use assert_cmd::Command;
+mod common;
+
+use common::{json, run};
 use serde_json::Value;
-
-struct Run {
-    code: i32,
-    stdout: String,
-    stderr: String,
-}
-
-fn run(args: &[&str]) -> Run {
-    let out = Command::cargo_bin("carry")
-        .expect("the carry binary is built")
-        .args(args)
-        .output()
-        .expect("carry runs");
-    Run {
-        code: out.status.code().unwrap_or(-1),
-        stdout: String::from_utf8_lossy(&out.stdout).into_owned(),
-        stderr: String::from_utf8_lossy(&out.stderr).into_owned(),
-    }
-}
-
-fn json(args: &[&str]) -> Value {
-    let r = run(args);
-    assert_eq!(r.code, 0, "carry {args:?} failed: {}", r.stderr);
-    serde_json::from_str(&r.stdout).expect("stdout is JSON")
-}
 
 fn num(v: &Value) -> f64 {
     v.as_f64().unwrap_or_else(|| panic!("not a number: {v}"))

@@ -1,12 +1,10 @@
 //! End-to-end test of `carry bench accuracy --quick` (the accuracy–cost study, issue 6):
 //! the reduced sweep runs in well under a second even unoptimised.
 
-use assert_cmd::Command;
-use serde_json::Value;
+mod common;
 
-fn carry() -> Command {
-    Command::cargo_bin("carry").expect("the carry binary is built")
-}
+use common::carry;
+use serde_json::Value;
 
 fn quick_json() -> Value {
     let out = carry()
