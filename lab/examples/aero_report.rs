@@ -18,9 +18,7 @@ use plotters::prelude::*;
 
 /// Issue 10's calibrated model (fitted to the tour table alone), for comparison: the same
 /// family without the low-spin lift.
-const ISSUE_10: [f64; 9] = [
-    0.1478, 0.46, 6.581e4, 0.3232, 0.5881, 0.4745, 0.0119, 0.0, 0.1,
-];
+const ISSUE_10: [f64; 9] = include!("issue_10_model.in");
 
 /// Bearman & Harvey (1976), hexagonal-dimple ball, figures 7 and 8, as digitised in the
 /// public repository lrhgit/tkt4140 (allfiles/Kap1/Eks14golf/cdcldata.m): (speed m/s,
