@@ -13,10 +13,10 @@
 #[path = "../tests/common/mod.rs"]
 mod common;
 
+use carry_core::Launch;
 use carry_core::aero::{AeroModel, ModernAero};
 use carry_core::flight::Integrator;
-use carry_core::units::{deg, rpm};
-use carry_core::{Launch, units::mph};
+use carry_core::units::{deg, mph, rpm};
 use carry_lab::fit::flight::{FIT_TOLERANCE, predict};
 
 /// Issue 10's calibrated model.

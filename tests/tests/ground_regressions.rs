@@ -5,6 +5,21 @@ use carry_core::wind::Wind;
 use carry_core::{Ball, BallMotion, Error, Field, Integrator, Reason, Scene, fly};
 use nalgebra::Vector3;
 
+/// A fuzzed ground scene in f32, as the ground fuzz target builds it: a wind profile with
+/// reference wind `wind` (m/s), the landing plane `landing_height_m` above the launch, the
+/// firm fairway tilted to `normal` (not normalised).
+fn fairway_in_wind(wind: [f32; 3], landing_height_m: f32, normal: [f32; 3]) -> Scene<f32> {
+    Scene {
+        wind: Wind::profile(Vector3::from(wind)),
+        landing_height_m,
+        ground: Some(Ground {
+            surface: Surface::FairwayFirm,
+            normal: Vector3::from(normal),
+        }),
+        ..Scene::default()
+    }
+}
+
 /// Issue 20: an f32 flight at 1.3·10⁵ m/s and 2.3·10⁶ rad/s with a 30 ms RK4 step landed
 /// with an astronomically large (finite) velocity, and the roll on a 40° slope came back
 /// `Ok` with `total_m = ∞`. (The fuzz input is fuzz/corpus/ground/issue-20-nonfinite-rollout.)
@@ -14,15 +29,11 @@ fn issue_20_f32_rollout_is_finite_or_an_error() {
         velocity_mps: Vector3::new(75686.54, 108983.45, -11210.602),
         spin_radps: Vector3::new(189.79669, -2261634.5, 1281.3812),
     };
-    let scene = Scene::<f32> {
-        wind: Wind::profile(Vector3::new(11.981918, -7.352941, -7.3538566)),
-        landing_height_m: -7.401999,
-        ground: Some(Ground {
-            surface: Surface::FairwayFirm,
-            normal: Vector3::new(0.01808194, 1.1679256, 0.99334705),
-        }),
-        ..Scene::default()
-    };
+    let scene = fairway_in_wind(
+        [11.981918, -7.352941, -7.3538566],
+        -7.401999,
+        [0.01808194, 1.1679256, 0.99334705],
+    );
     let out = fly(
         &Ball::standard(),
         &motion,
@@ -151,15 +162,11 @@ fn a_hop_the_lift_holds_up_is_integrated_not_extrapolated() {
         velocity_mps: Vector3::new(43.503838, -14.086464, -13.457313),
         spin_radps: Vector3::new(136.68153, 17.254902, 441.85425),
     };
-    let scene = Scene::<f32> {
-        wind: Wind::profile(Vector3::new(0.05882353, -1.0, 11.777752)),
-        landing_height_m: 4.922103,
-        ground: Some(Ground {
-            surface: Surface::FairwayFirm,
-            normal: Vector3::new(0.4745098, 1.4745098, 0.003921569),
-        }),
-        ..Scene::default()
-    };
+    let scene = fairway_in_wind(
+        [0.05882353, -1.0, 11.777752],
+        4.922103,
+        [0.4745098, 1.4745098, 0.003921569],
+    );
     let out = fly(
         &Ball::standard(),
         &motion,
