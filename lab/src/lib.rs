@@ -13,6 +13,8 @@
 //! * [`dispersion`]: Monte-Carlo over delivery noise, landing statistics and ellipse.
 //! * [`normalize`]: the carry of a launch in standard conditions, and back.
 //! * [`bag`]: the bag from delivery alone against TrackMan's 2023 tour averages.
+//! * [`drives`]: single TrackMan drives (`../shared/data/trackman_amateur_drives.csv`), read
+//!   where they lie, with session blocks for cross-validation.
 //!
 //! The command line (`carry-cli`) is a thin shell over this crate: it parses, calls, and
 //! formats; every analysis returns data (and renders tables or charts on request) rather
@@ -23,6 +25,7 @@ pub use carry_io::aero_file;
 pub mod bag;
 pub mod columns;
 pub mod dispersion;
+pub mod drives;
 pub mod error;
 pub mod fit;
 pub mod ground_fit;
