@@ -14,6 +14,7 @@ mod problem;
 mod report;
 pub mod request;
 pub mod request_contact;
+pub mod single_drives;
 mod solve;
 
 pub use bounded::{to_bounded, to_unbounded};
