@@ -377,6 +377,52 @@ fn main() {
         println!("| {name} | {} | {} | {} |", f(tm), f(mb), f(ma));
     }
 
+    // The share by subset (model before, all rows at the typical strike): where the ball's
+    // curvature is tracked (outdoors) against the indoor rows, by ball, by session.
+    println!("\n## D-plane share k by subset (tan a_TrackMan = k tan a_model, before)\n");
+    println!(
+        "| subset | rows | k | axis per ° of face-to-path: TrackMan / model |\n|---|---|---|---|"
+    );
+    let subsets: [(&str, &dyn Fn(&Row) -> bool); 4] = [
+        ("indoors (tracked < 100 yd)", &|r| {
+            !r.drive.tracked_outdoors()
+        }),
+        ("tracked outdoors", &|r| r.drive.tracked_outdoors()),
+        ("premium ball", &|r| {
+            r.drive.ball == drives::BallKind::Premium
+        }),
+        ("other balls", &|r| {
+            r.drive.ball != drives::BallKind::Premium
+        }),
+    ];
+    let share = |rows: Vec<&Row>, name: &str| {
+        let pairs: Vec<(f64, f64)> = rows.iter().map(|r| (r.typical[4], r.obs[4])).collect();
+        let x: Vec<[f64; 2]> = rows.iter().map(|r| [ftp(r), 0.0]).collect();
+        let tm: Vec<f64> = rows.iter().map(|r| r.obs[4]).collect();
+        let m: Vec<f64> = rows.iter().map(|r| r.typical[4]).collect();
+        println!(
+            "| {name} | {} | {:.2} | {:.2} / {:.2} |",
+            pairs.len(),
+            fit_dplane_share(&pairs).unwrap_or(f64::NAN),
+            slopes(&x, &tm, false)[0],
+            slopes(&x, &m, false)[0]
+        );
+    };
+    for (name, keep) in subsets {
+        share(before.iter().filter(|r| keep(r)).collect(), name);
+    }
+    for &s in &sessions {
+        for (place, out) in [("indoors", false), ("outdoors", true)] {
+            let rows: Vec<&Row> = before
+                .iter()
+                .filter(|r| r.drive.session() == s && r.drive.tracked_outdoors() == out)
+                .collect();
+            if rows.len() >= 30 {
+                share(rows, &format!("session {s}, {place}"));
+            }
+        }
+    }
+
     // Spin's growth with club speed, other delivery terms held (rpm per mph).
     let x: Vec<[f64; 4]> = before
         .iter()
