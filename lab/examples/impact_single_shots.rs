@@ -383,17 +383,15 @@ fn main() {
     println!(
         "| subset | rows | k | axis per ° of face-to-path: TrackMan / model |\n|---|---|---|---|"
     );
-    let subsets: [(&str, &dyn Fn(&Row) -> bool); 4] = [
-        ("indoors (tracked < 100 yd)", &|r| {
+    let subsets: [Band; 4] = [
+        ("indoors (tracked < 100 yd)", |r| {
             !r.drive.tracked_outdoors()
         }),
-        ("tracked outdoors", &|r| r.drive.tracked_outdoors()),
-        ("premium ball", &|r| {
+        ("tracked outdoors", |r| r.drive.tracked_outdoors()),
+        ("premium ball", |r| {
             r.drive.ball == drives::BallKind::Premium
         }),
-        ("other balls", &|r| {
-            r.drive.ball != drives::BallKind::Premium
-        }),
+        ("other balls", |r| r.drive.ball != drives::BallKind::Premium),
     ];
     let share = |rows: Vec<&Row>, name: &str| {
         let pairs: Vec<(f64, f64)> = rows.iter().map(|r| (r.typical[4], r.obs[4])).collect();
