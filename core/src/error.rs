@@ -145,6 +145,10 @@ pub enum Field {
     PriorSpread,
     /// The estimator's iteration budget.
     Iterations,
+    /// A bound of the estimator's consistency check (tail probability or σ count).
+    ConsistencyBound,
+    /// Spin axis (rad).
+    SpinAxis,
 }
 
 /// Why an input was rejected.
@@ -212,6 +216,13 @@ pub enum Error {
     /// The estimator's normal matrix is numerically singular: the measurements and priors
     /// do not pin the unknowns down in this precision.
     IllPosed,
+    /// The estimator's data disagree with each other or with the club
+    /// ([`crate::estimate::Consistency`]): the χ² of the most probable delivery is beyond
+    /// its bound, or a measured datum is missed by more than the stated number of σ.
+    Inconsistent {
+        /// The datum the most probable delivery misses by the most σ.
+        worst: crate::estimate::Datum,
+    },
 }
 
 /// Result alias of the core.
@@ -293,6 +304,8 @@ impl Field {
             Self::PriorMean => "prior mean",
             Self::PriorSpread => "prior spread",
             Self::Iterations => "iteration budget",
+            Self::ConsistencyBound => "consistency bound",
+            Self::SpinAxis => "spin axis",
         }
     }
 }
@@ -345,6 +358,10 @@ impl fmt::Display for Error {
             }
             Self::IllPosed => f.write_str(
                 "the estimate is ill-posed: the data and priors do not determine the delivery",
+            ),
+            Self::Inconsistent { worst } => write!(
+                f,
+                "the data disagree with each other or with the club (worst: the {worst})"
             ),
         }
     }

@@ -26,6 +26,40 @@
 // (about half the instructions; the 1σ of attack, spin loft and strike height too narrow).
 #define CARRY_POSTERIOR_LAPLACE 1
 
+// `CarryEstimateResult::worst`: the measured ball speed.
+#define CARRY_DATUM_BALL_SPEED 0
+
+// `CarryEstimateResult::worst`: the measured launch angle.
+#define CARRY_DATUM_LAUNCH_ANGLE 1
+
+// `CarryEstimateResult::worst`: the measured launch direction.
+#define CARRY_DATUM_LAUNCH_DIRECTION 2
+
+// `CarryEstimateResult::worst`: the measured spin rate.
+#define CARRY_DATUM_SPIN 3
+
+// `CarryEstimateResult::worst`: the measured spin axis.
+#define CARRY_DATUM_SPIN_AXIS 4
+
+// `CarryEstimateResult::worst`: the measured club speed.
+#define CARRY_DATUM_CLUB_SPEED 5
+
+// `CarryEstimateResult::worst`: the measured attack angle.
+#define CARRY_DATUM_ATTACK_ANGLE 6
+
+// `CarryEstimateResult::worst`: the measured club path.
+#define CARRY_DATUM_CLUB_PATH 7
+
+// `CarryEstimateResult::worst`: the measured face angle.
+#define CARRY_DATUM_FACE_ANGLE 8
+
+// `CarryEstimateResult::worst`: the measured dynamic loft.
+#define CARRY_DATUM_DYNAMIC_LOFT 9
+
+// `CarryEstimateResult::worst`: the club (its prior): the data need a delivery far from
+// its typical one.
+#define CARRY_DATUM_CLUB 10
+
 // `CarryEstimateInput::measured` bit: the club speed was measured.
 #define CARRY_MEASURED_CLUB_SPEED 1
 
@@ -150,6 +184,13 @@ typedef enum carry_error_t {
   CARRY_ERR_UNKNOWN_OPTION = 13,
   // A core error this version of the C API does not know.
   CARRY_ERR_OTHER = 14,
+  // The estimator did not converge within its iteration budget.
+  CARRY_ERR_NO_CONVERGENCE = 15,
+  // The estimator's normal matrix is singular in this precision.
+  CARRY_ERR_ILL_POSED = 16,
+  // The estimator's data disagree with each other or with the club: `*out` is written
+  // (the best compromise) and its `worst` names the worst datum (`CARRY_DATUM_*`).
+  CARRY_ERR_INCONSISTENT = 17,
 } carry_error_t;
 
 // A club head (SI units, angles in radians; frames of PHYSICS.md). Start from
@@ -871,6 +912,10 @@ typedef struct CarryEstimateInput_f32 {
   // The posterior summary: `CARRY_POSTERIOR_PROFILE` (default) or
   // `CARRY_POSTERIOR_LAPLACE`; anything else is `CARRY_ERR_UNKNOWN_OPTION`.
   uint32_t posterior;
+  // The consistency check's χ² tail probability, in (0, 0.5] (default 0.001).
+  float check_tail_probability;
+  // The consistency check's bound on a measured datum's miss, in σ (default 4).
+  float check_max_shift_sd;
 } CarryEstimateInput_f32;
 
 // Estimate input in single precision.
@@ -937,6 +982,10 @@ typedef struct CarryEstimateInput_f64 {
   // The posterior summary: `CARRY_POSTERIOR_PROFILE` (default) or
   // `CARRY_POSTERIOR_LAPLACE`; anything else is `CARRY_ERR_UNKNOWN_OPTION`.
   uint32_t posterior;
+  // The consistency check's χ² tail probability, in (0, 0.5] (default 0.001).
+  double check_tail_probability;
+  // The consistency check's bound on a measured datum's miss, in σ (default 4).
+  double check_max_shift_sd;
 } CarryEstimateInput_f64;
 
 // Estimate input in double precision.
@@ -978,6 +1027,17 @@ typedef struct CarryEstimateResult_f32 {
   uint32_t iterations;
   // 1 when the club speed was estimated, 0 when measured.
   uint32_t club_speed_estimated;
+  // 1 when the data passed the consistency check, 0 when not (then the call returns
+  // `CARRY_ERR_INCONSISTENT`).
+  uint32_t consistent;
+  // The cost at the most probable delivery (χ²).
+  float chi2;
+  // Its bound (the χ² quantile of the tail probability, as many degrees of freedom as data).
+  float chi2_bound;
+  // The datum the most probable delivery misses by the most σ (`CARRY_DATUM_*`).
+  uint32_t worst;
+  // By how many of its σ.
+  float worst_sd;
 } CarryEstimateResult_f32;
 
 // Estimate result in single precision.
@@ -1019,6 +1079,17 @@ typedef struct CarryEstimateResult_f64 {
   uint32_t iterations;
   // 1 when the club speed was estimated, 0 when measured.
   uint32_t club_speed_estimated;
+  // 1 when the data passed the consistency check, 0 when not (then the call returns
+  // `CARRY_ERR_INCONSISTENT`).
+  uint32_t consistent;
+  // The cost at the most probable delivery (χ²).
+  double chi2;
+  // Its bound (the χ² quantile of the tail probability, as many degrees of freedom as data).
+  double chi2_bound;
+  // The datum the most probable delivery misses by the most σ (`CARRY_DATUM_*`).
+  uint32_t worst;
+  // By how many of its σ.
+  double worst_sd;
 } CarryEstimateResult_f64;
 
 // Estimate result in double precision.
@@ -1049,7 +1120,7 @@ typedef struct CarrySettings_f32 CarrySettingsF32;
 typedef struct CarrySettings_f64 CarrySettingsF64;
 
 // Every code, in order (for tests and tables).
-#define ALL { CARRY_OK, CARRY_ERR_INVALID_INPUT, CARRY_ERR_OFF_FACE, CARRY_ERR_NO_APPROACH, CARRY_ERR_SINGULAR, CARRY_ERR_NO_LANDING, CARRY_ERR_TIME_LIMIT, CARRY_ERR_STEP_SIZE_UNDERFLOW, CARRY_ERR_UNSTABLE, CARRY_ERR_STEP_LIMIT, CARRY_ERR_NULL_POINTER, CARRY_ERR_BUFFER_TOO_SMALL, CARRY_ERR_UNKNOWN_NAME, CARRY_ERR_UNKNOWN_OPTION, CARRY_ERR_OTHER, }
+#define ALL { CARRY_OK, CARRY_ERR_INVALID_INPUT, CARRY_ERR_OFF_FACE, CARRY_ERR_NO_APPROACH, CARRY_ERR_SINGULAR, CARRY_ERR_NO_LANDING, CARRY_ERR_TIME_LIMIT, CARRY_ERR_STEP_SIZE_UNDERFLOW, CARRY_ERR_UNSTABLE, CARRY_ERR_STEP_LIMIT, CARRY_ERR_NULL_POINTER, CARRY_ERR_BUFFER_TOO_SMALL, CARRY_ERR_UNKNOWN_NAME, CARRY_ERR_UNKNOWN_OPTION, CARRY_ERR_OTHER, CARRY_ERR_NO_CONVERGENCE, CARRY_ERR_ILL_POSED, CARRY_ERR_INCONSISTENT, }
 
 #ifdef __cplusplus
 extern "C" {

@@ -396,9 +396,14 @@ unsafe fn estimate_entry<T: Real>(
         let out = non_null(out)?;
         // SAFETY: NULL or readable by the caller's contract.
         let result = unsafe { with(input, crate::estimate::run) }?;
+        let consistent = result.consistent != 0;
         // SAFETY: not NULL; writable by the caller's contract.
         unsafe { write(out, result) };
-        Ok(())
+        if consistent {
+            Ok(())
+        } else {
+            Err(crate::error::CARRY_ERR_INCONSISTENT)
+        }
     })())
 }
 
@@ -445,7 +450,8 @@ pub unsafe extern "C" fn carry_estimate_input_default_f64(
 
 /// Club data from ball data (issue 23, docs/estimate.md): the delivery that explains the
 /// measured ball data, each datum with its 1σ; single precision. Writes `*out` on
-/// `CARRY_OK` only.
+/// `CARRY_OK` and on `CARRY_ERR_INCONSISTENT` (the data disagree with each other or with
+/// the club: `out->worst` names the worst datum, issue 34) only.
 ///
 /// # Safety
 /// `input` is NULL or points to a readable input, `out` NULL or to a writable result.

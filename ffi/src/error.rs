@@ -41,6 +41,13 @@ pub enum CarryError {
     CARRY_ERR_UNKNOWN_OPTION = 13,
     /// A core error this version of the C API does not know.
     CARRY_ERR_OTHER = 14,
+    /// The estimator did not converge within its iteration budget.
+    CARRY_ERR_NO_CONVERGENCE = 15,
+    /// The estimator's normal matrix is singular in this precision.
+    CARRY_ERR_ILL_POSED = 16,
+    /// The estimator's data disagree with each other or with the club: `*out` is written
+    /// (the best compromise) and its `worst` names the worst datum (`CARRY_DATUM_*`).
+    CARRY_ERR_INCONSISTENT = 17,
 }
 
 pub use CarryError::*;
@@ -60,13 +67,16 @@ impl From<Error> for CarryError {
             Error::StepSizeUnderflow => CARRY_ERR_STEP_SIZE_UNDERFLOW,
             Error::Unstable => CARRY_ERR_UNSTABLE,
             Error::StepLimit => CARRY_ERR_STEP_LIMIT,
+            Error::NoConvergence => CARRY_ERR_NO_CONVERGENCE,
+            Error::IllPosed => CARRY_ERR_ILL_POSED,
+            Error::Inconsistent { .. } => CARRY_ERR_INCONSISTENT,
             _ => CARRY_ERR_OTHER,
         }
     }
 }
 
 /// Every code, in order (for tests and tables).
-pub const ALL: [CarryError; 15] = [
+pub const ALL: [CarryError; 18] = [
     CARRY_OK,
     CARRY_ERR_INVALID_INPUT,
     CARRY_ERR_OFF_FACE,
@@ -82,6 +92,9 @@ pub const ALL: [CarryError; 15] = [
     CARRY_ERR_UNKNOWN_NAME,
     CARRY_ERR_UNKNOWN_OPTION,
     CARRY_ERR_OTHER,
+    CARRY_ERR_NO_CONVERGENCE,
+    CARRY_ERR_ILL_POSED,
+    CARRY_ERR_INCONSISTENT,
 ];
 
 /// The message of the code with number `code` (any number: unknown ones have one too).
@@ -103,6 +116,9 @@ pub fn message(code: u32) -> &'static CStr {
         12 => c"no club preset has this name or index",
         13 => c"a selector field holds none of its CARRY_* values",
         14 => c"an error this version of the C API does not know",
+        15 => c"the estimate did not converge within its iteration budget",
+        16 => c"the estimate is ill-posed in this precision",
+        17 => c"the estimate's data disagree with each other or with the club",
         _ => c"unknown error code",
     }
 }

@@ -4,7 +4,7 @@
 use crate::club::{CarryBall, CarryClub};
 use crate::error::{CARRY_ERR_UNKNOWN_OPTION, Result};
 use carry_core::estimate::{
-    self, BallData, ClubData, ClubEstimate, Noise, Prior, Settings, Unknowns,
+    self, BallData, Check, ClubData, ClubEstimate, Datum, Noise, Prior, Settings, Unknowns,
 };
 use carry_core::presets::Preset;
 use carry_core::real::Real;
@@ -26,6 +26,48 @@ pub const CARRY_MEASURED_CLUB_PATH: u32 = 4;
 pub const CARRY_MEASURED_FACE_ANGLE: u32 = 8;
 /// `CarryEstimateInput::measured` bit: the dynamic loft was measured.
 pub const CARRY_MEASURED_DYNAMIC_LOFT: u32 = 16;
+
+/// `CarryEstimateResult::worst`: the measured ball speed.
+pub const CARRY_DATUM_BALL_SPEED: u32 = 0;
+/// `CarryEstimateResult::worst`: the measured launch angle.
+pub const CARRY_DATUM_LAUNCH_ANGLE: u32 = 1;
+/// `CarryEstimateResult::worst`: the measured launch direction.
+pub const CARRY_DATUM_LAUNCH_DIRECTION: u32 = 2;
+/// `CarryEstimateResult::worst`: the measured spin rate.
+pub const CARRY_DATUM_SPIN: u32 = 3;
+/// `CarryEstimateResult::worst`: the measured spin axis.
+pub const CARRY_DATUM_SPIN_AXIS: u32 = 4;
+/// `CarryEstimateResult::worst`: the measured club speed.
+pub const CARRY_DATUM_CLUB_SPEED: u32 = 5;
+/// `CarryEstimateResult::worst`: the measured attack angle.
+pub const CARRY_DATUM_ATTACK_ANGLE: u32 = 6;
+/// `CarryEstimateResult::worst`: the measured club path.
+pub const CARRY_DATUM_CLUB_PATH: u32 = 7;
+/// `CarryEstimateResult::worst`: the measured face angle.
+pub const CARRY_DATUM_FACE_ANGLE: u32 = 8;
+/// `CarryEstimateResult::worst`: the measured dynamic loft.
+pub const CARRY_DATUM_DYNAMIC_LOFT: u32 = 9;
+/// `CarryEstimateResult::worst`: the club (its prior): the data need a delivery far from
+/// its typical one.
+pub const CARRY_DATUM_CLUB: u32 = 10;
+
+/// The `CARRY_DATUM_*` code of a datum.
+#[must_use]
+pub fn datum_code(d: Datum) -> u32 {
+    match d {
+        Datum::BallSpeed => CARRY_DATUM_BALL_SPEED,
+        Datum::LaunchAngle => CARRY_DATUM_LAUNCH_ANGLE,
+        Datum::LaunchDirection => CARRY_DATUM_LAUNCH_DIRECTION,
+        Datum::Spin => CARRY_DATUM_SPIN,
+        Datum::SpinAxis => CARRY_DATUM_SPIN_AXIS,
+        Datum::ClubSpeed => CARRY_DATUM_CLUB_SPEED,
+        Datum::AttackAngle => CARRY_DATUM_ATTACK_ANGLE,
+        Datum::ClubPath => CARRY_DATUM_CLUB_PATH,
+        Datum::FaceAngle => CARRY_DATUM_FACE_ANGLE,
+        Datum::DynamicLoft => CARRY_DATUM_DYNAMIC_LOFT,
+        Datum::Club => CARRY_DATUM_CLUB,
+    }
+}
 
 /// The estimator's unknowns (TrackMan's convention; m/s, rad, m): also the shape of the
 /// prior's mean and spread and of the club measurements and their noise.
@@ -94,6 +136,10 @@ pub struct CarryEstimateInput<T> {
     /// The posterior summary: `CARRY_POSTERIOR_PROFILE` (default) or
     /// `CARRY_POSTERIOR_LAPLACE`; anything else is `CARRY_ERR_UNKNOWN_OPTION`.
     pub posterior: u32,
+    /// The consistency check's χ² tail probability, in (0, 0.5] (default 0.001).
+    pub check_tail_probability: T,
+    /// The consistency check's bound on a measured datum's miss, in σ (default 4).
+    pub check_max_shift_sd: T,
 }
 
 /// The estimated delivery, or its 1σ (rad, m, m/s).
@@ -136,6 +182,17 @@ pub struct CarryEstimateResult<T> {
     pub iterations: u32,
     /// 1 when the club speed was estimated, 0 when measured.
     pub club_speed_estimated: u32,
+    /// 1 when the data passed the consistency check, 0 when not (then the call returns
+    /// `CARRY_ERR_INCONSISTENT`).
+    pub consistent: u32,
+    /// The cost at the most probable delivery (χ²).
+    pub chi2: T,
+    /// Its bound (the χ² quantile of the tail probability, as many degrees of freedom as data).
+    pub chi2_bound: T,
+    /// The datum the most probable delivery misses by the most σ (`CARRY_DATUM_*`).
+    pub worst: u32,
+    /// By how many of its σ.
+    pub worst_sd: T,
 }
 
 fn to_core<T: Copy>(d: &CarryDeliveryData<T>) -> Unknowns<T> {
@@ -198,11 +255,11 @@ fn estimate_c<T: Copy>(e: &ClubEstimate<T>) -> CarryClubEstimate<T> {
 }
 
 impl<T: Real> CarryEstimateInput<T> {
-    /// The defaults for `preset`: its club, the standard ball, the default noise and the
-    /// preset's typical prior (`Settings::typical`), nothing measured, zero ball data.
+    /// The defaults for `preset`: its club, the standard ball, the preset's noise, prior and
+    /// consistency check (`Settings::for_preset`), nothing measured, zero ball data.
     #[must_use]
     pub fn typical(preset: &Preset) -> Self {
-        let s = Settings::<T>::typical(&preset.typical);
+        let s = Settings::<T>::for_preset(preset);
         Self {
             club: CarryClub::from_spec(&preset.spec()),
             ball: CarryBall::standard(),
@@ -216,6 +273,8 @@ impl<T: Real> CarryEstimateInput<T> {
             max_iterations: u32::from(s.max_iterations),
             tolerance: s.tolerance,
             posterior: CARRY_POSTERIOR_PROFILE,
+            check_tail_probability: s.check.tail_probability,
+            check_max_shift_sd: s.check.max_shift_sd,
         }
     }
 }
@@ -232,11 +291,12 @@ impl<T: Real> CarryDeliveryData<T> {
     }
 }
 
-/// The estimate of `input`.
+/// The estimate of `input` (also when its data are inconsistent: `consistent` says so,
+/// and [`crate::api`] returns `CARRY_ERR_INCONSISTENT` with the result written).
 ///
 /// # Errors
 /// The core's errors (`CARRY_ERR_INVALID_INPUT` for a bad measurement, noise, prior,
-/// budget or tolerance; `CARRY_ERR_OTHER` for no convergence or an ill-posed problem);
+/// budget, tolerance or check; `CARRY_ERR_NO_CONVERGENCE`, `CARRY_ERR_ILL_POSED`);
 /// `CARRY_ERR_UNKNOWN_OPTION` for an unknown `posterior`.
 pub fn run<T: Real>(input: &CarryEstimateInput<T>) -> Result<CarryEstimateResult<T>> {
     let club = input.club.spec()?.validate()?;
@@ -268,6 +328,10 @@ pub fn run<T: Real>(input: &CarryEstimateInput<T>) -> Result<CarryEstimateResult
             CARRY_POSTERIOR_LAPLACE => estimate::Posterior::Laplace,
             _ => return Err(CARRY_ERR_UNKNOWN_OPTION),
         },
+        check: Check {
+            tail_probability: input.check_tail_probability,
+            max_shift_sd: input.check_max_shift_sd,
+        },
     };
     let e = estimate::estimate(
         &club,
@@ -282,5 +346,10 @@ pub fn run<T: Real>(input: &CarryEstimateInput<T>) -> Result<CarryEstimateResult
         residual: ball_c(&e.residual),
         iterations: u32::from(e.iterations),
         club_speed_estimated: u32::from(e.club_speed_estimated),
+        consistent: u32::from(e.consistency.consistent),
+        chi2: e.consistency.chi2,
+        chi2_bound: e.consistency.bound,
+        worst: datum_code(e.consistency.worst),
+        worst_sd: e.consistency.worst_sd,
     })
 }

@@ -62,7 +62,7 @@ fn estimate_f64_is_the_core_s_and_recovers_a_delivery() {
             club_speed_mps: Some(44.0),
             ..ClubData::default()
         },
-        &Settings::typical(&preset.typical),
+        &Settings::for_preset(preset),
     )
     .expect("estimate");
     assert_eq!(
@@ -152,7 +152,7 @@ fn estimate_takes_the_posterior_summary() {
     assert_eq!(rc, CARRY_OK);
     let settings = Settings {
         posterior: Posterior::Laplace,
-        ..Settings::typical(&preset.typical)
+        ..Settings::for_preset(preset)
     };
     let core = estimate(
         &club,
@@ -170,4 +170,42 @@ fn estimate_takes_the_posterior_summary() {
         out.sd.attack_angle_rad.to_bits(),
         core.sd.attack_angle_rad.to_bits()
     );
+}
+
+/// Issue 34: ball data and a club speed that disagree return `CARRY_ERR_INCONSISTENT` with
+/// the result written, its verdict naming the worst datum (the ball or the club speed);
+/// the same ball data with a fitting club speed are `CARRY_OK` and consistent.
+#[test]
+fn estimate_reports_inconsistent_data() {
+    use carry_ffi::estimate::{CARRY_DATUM_BALL_SPEED, CARRY_DATUM_CLUB_SPEED};
+    let mut input = driver_input::<f64>(carry_estimate_input_default_f64);
+    input.measured_ball.ball_speed_mps = 70.0;
+    input.measured_ball.launch_angle_rad = deg(12.0);
+    input.measured_ball.spin_radps = 2800.0 * core::f64::consts::PI / 30.0;
+    input.measured = CARRY_MEASURED_CLUB_SPEED;
+    input.measured_club.club_speed_mps = 5.0;
+    let mut out = CarryEstimateResult::<f64>::default();
+    // SAFETY: valid pointers.
+    let rc = unsafe { carry_estimate_f64(&input, &mut out) };
+    assert_eq!(rc, CARRY_ERR_INCONSISTENT);
+    assert_eq!(out.consistent, 0);
+    assert!(out.chi2 > out.chi2_bound && out.chi2_bound > 0.0, "{out:?}");
+    assert!(
+        [CARRY_DATUM_BALL_SPEED, CARRY_DATUM_CLUB_SPEED].contains(&out.worst),
+        "{out:?}"
+    );
+    assert!(
+        out.worst_sd > 4.0 && out.value.club_speed_mps > 5.0,
+        "{out:?}"
+    );
+    input.measured_club.club_speed_mps = 47.0;
+    // SAFETY: valid pointers.
+    let rc = unsafe { carry_estimate_f64(&input, &mut out) };
+    assert_eq!(rc, CARRY_OK);
+    assert_eq!(out.consistent, 1);
+    // a check bound out of range is invalid input
+    input.check_tail_probability = 0.0;
+    // SAFETY: valid pointers.
+    let rc = unsafe { carry_estimate_f64(&input, &mut out) };
+    assert_eq!(rc, CARRY_ERR_INVALID_INPUT);
 }

@@ -79,7 +79,19 @@ fn run<T: Real>(b: &mut Bytes<'_>) -> Result<()> {
     if b.flag() {
         settings.posterior = Posterior::Laplace;
     }
+    // read last, so that the corpus keeps its meaning: arbitrary consistency bounds
+    if b.flag() {
+        settings.check.tail_probability = lit(b.param(-0.1, 0.6));
+        settings.check.max_shift_sd = lit(b.param(-1.0, 20.0));
+    }
     let e = estimate(&club, &ball, &measured, &club_data, &settings)?;
+    let c = e.consistency;
+    assert!(
+        c.chi2 >= T::zero() && c.bound > T::zero() && c.worst_sd >= T::zero(),
+        "bad consistency verdict {c:?}"
+    );
+    assert!((5..=10).contains(&c.dof), "dof {c:?}");
+    assert_eq!(e.checked().is_ok(), c.consistent);
     let all = e
         .value
         .to_array()

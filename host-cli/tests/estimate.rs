@@ -294,3 +294,127 @@ fn estimate_takes_the_posterior_summary() {
         assert!(num(&r["residual_ball_speed_mps"]).abs() < 0.5, "{r}");
     }
 }
+
+/// Issue 34: data that disagree are one line on stderr naming the worst datum's option,
+/// status 2 — not an estimate marked "measured" with a 6.6 m/s ball-speed residual.
+#[test]
+fn estimate_reports_inconsistent_data_with_status_2() {
+    let shot = |club_speed: &str| {
+        run(&[
+            "estimate",
+            "--ball-speed",
+            "70",
+            "--launch-angle",
+            "12",
+            "--spin",
+            "2800",
+            "--spin-axis",
+            "0",
+            "--club-speed",
+            club_speed,
+        ])
+    };
+    let Run {
+        code,
+        stdout,
+        stderr,
+    } = shot("5");
+    assert_eq!(code, 2, "{stdout}");
+    assert!(stdout.is_empty(), "{stdout}");
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    // the worst datum is one of the two that disagree, by its option; the χ² and its bound
+    assert!(
+        stderr.contains("--ball-speed:") || stderr.contains("--club-speed:"),
+        "{stderr}"
+    );
+    assert!(
+        stderr.contains("χ²") && stderr.contains("bound"),
+        "{stderr}"
+    );
+    // the same shot with a club speed that fits passes
+    let Run { code, stderr, .. } = shot("47");
+    assert_eq!(code, 0, "{stderr}");
+}
+
+/// Issue 34: errors name the option that caused them — a launch angle out of range is the
+/// launch angle's (it was reported as the launch direction's), a spin axis the spin axis's.
+#[test]
+fn estimate_names_the_option_out_of_range() {
+    for (args, option) in [
+        (
+            vec![
+                "estimate",
+                "--ball-speed",
+                "70",
+                "--launch-angle",
+                "95",
+                "--spin",
+                "2800",
+            ],
+            "--launch-angle:",
+        ),
+        (
+            vec![
+                "estimate",
+                "--ball-speed",
+                "70",
+                "--launch-direction",
+                "-95",
+            ],
+            "--launch-direction:",
+        ),
+        (
+            vec![
+                "estimate",
+                "--ball-speed",
+                "70",
+                "--spin",
+                "2800",
+                "--spin-axis",
+                "200",
+            ],
+            "--spin-axis:",
+        ),
+    ] {
+        let Run { code, stderr, .. } = run(&args);
+        assert_eq!(code, 2, "{args:?}: {stderr}");
+        assert!(stderr.contains(option), "{args:?}: {stderr}");
+        assert!(!stderr.contains("--precision"), "{stderr}");
+    }
+}
+
+/// Issue 34: in a batch an inconsistent row keeps its place and says why in `error`; the
+/// consistent rows report their χ² below its bound.
+#[test]
+fn batch_estimate_flags_inconsistent_rows() {
+    let dir = std::env::temp_dir().join(format!("carry-est-34-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let input = dir.join("in.csv");
+    std::fs::write(
+        &input,
+        "ball_speed,launch_angle,launch_direction,spin,spin_axis,club_speed\n\
+         66,13.2,1.1,2750,6.5,45.5\n\
+         70,12,0,2800,0,5\n",
+    )
+    .expect("write input");
+    let path = input.to_string_lossy().into_owned();
+    let Run {
+        code,
+        stdout: csv,
+        stderr,
+    } = run(&["batch", "estimate", "--club", "driver", "-i", &path]);
+    assert_eq!(code, 0, "{stderr}");
+    let mut lines = csv.lines();
+    let header: Vec<&str> = lines.next().expect("header").split(',').collect();
+    let col = |name: &str| header.iter().position(|h| *h == name).expect("column");
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    assert_eq!(rows.len(), 2);
+    let chi2: f64 = rows[0][col("chi2")].parse().expect("chi2");
+    let bound: f64 = rows[0][col("chi2_bound")].parse().expect("bound");
+    assert!(chi2 <= bound, "{chi2} > {bound}");
+    assert!(rows[0][col("error")].is_empty(), "{:?}", rows[0]);
+    let error = rows[1][header.len() - 1..].join(",");
+    assert!(rows[1][col("face_angle_deg")].is_empty(), "{:?}", rows[1]);
+    assert!(error.contains("disagrees"), "{error}");
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -6,6 +6,7 @@
 //! --impact-toe`; no landing → `--landing-height`, …). The ranges a message quotes come from
 //! the core's constants (stimp, slope, turf coefficients, launch speed and spin).
 
+use carry_core::estimate::Datum;
 use carry_core::ground::surface::MAX_TURF_COEFFICIENT;
 use carry_core::units::{
     ALTITUDE_RANGE_M, M_PER_FOOT, MAX_SLOPE_RAD, STIMP_RANGE_M, TEMPERATURE_RANGE_C,
@@ -89,6 +90,7 @@ pub fn field_key(field: Field) -> &'static str {
         Field::ImpactToe => "impact_toe",
         Field::BallVelocity | Field::BallSpeed => "ball_speed",
         Field::BallSpin => "backspin, sidespin, spin",
+        Field::SpinAxis => "spin_axis",
         Field::LaunchAngle => "launch_angle",
         Field::LaunchDirection => "launch_direction",
         Field::Backspin => "backspin",
@@ -123,6 +125,28 @@ pub fn field_key(field: Field) -> &'static str {
         _ => "precision",
     }
 }
+
+/// The option (snake_case) of a datum of the estimator (`carry estimate`): the measured
+/// ball and club data by their options, the club's prior by `club`.
+#[must_use]
+pub fn datum_key(datum: Datum) -> &'static str {
+    match datum {
+        Datum::BallSpeed => "ball_speed",
+        Datum::LaunchAngle => "launch_angle",
+        Datum::LaunchDirection => "launch_direction",
+        Datum::Spin => "spin",
+        Datum::SpinAxis => "spin_axis",
+        Datum::ClubSpeed => "club_speed",
+        Datum::AttackAngle => "attack_angle",
+        Datum::ClubPath => "club_path",
+        Datum::FaceAngle => "face_angle",
+        Datum::DynamicLoft => "dynamic_loft",
+        Datum::Club => "club",
+    }
+}
+
+/// The estimator's ball data options, which a non-converged estimate names.
+pub const BALL_DATA_KEYS: &str = "ball_speed, launch_angle, launch_direction, spin, spin_axis";
 
 /// A number as the messages write it: a true minus sign (−), no trailing `.0`.
 struct Minus(f64);
@@ -222,6 +246,22 @@ impl From<Error> for InputError {
                 "tolerance",
                 "the integrator used up its step budget before landing (loosen the tolerance)",
             ),
+            Error::NoConvergence => Self::new(
+                BALL_DATA_KEYS,
+                "the estimate did not converge within its iteration budget: the data may disagree with each other or with --club",
+            ),
+            Error::IllPosed => Self::new(
+                "precision",
+                "the estimate is ill-posed in this precision: the data and priors do not determine the delivery (try --precision f64)",
+            ),
+            Error::Inconsistent { worst } => Self::new(
+                datum_key(worst),
+                if worst == Datum::Club {
+                    "the ball data disagree with this club: the delivery they need is far from its typical one".to_owned()
+                } else {
+                    format!("the data disagree with each other or with --club; the {worst} most")
+                },
+            ),
             // A future core error: still one line, never a panic.
             other => Self::new("precision", other.to_string()),
         }
@@ -257,6 +297,26 @@ mod tests {
             e.as_column(),
             "impact_height, impact_toe: the impact point is off the club face"
         );
+    }
+
+    /// The estimator's errors name the options that cause them (issue 34), not `--precision`.
+    #[test]
+    fn estimate_errors_name_their_options() {
+        let e = InputError::from(Error::NoConvergence);
+        assert!(
+            e.to_string().starts_with("--ball-speed, --launch-angle"),
+            "{e}"
+        );
+        let e = InputError::from(Error::Inconsistent {
+            worst: Datum::ClubSpeed,
+        });
+        assert!(e.to_string().starts_with("--club-speed: "), "{e}");
+        let e = InputError::from(Error::Inconsistent { worst: Datum::Club });
+        assert!(e.to_string().starts_with("--club: "), "{e}");
+        let e = InputError::from(Error::invalid(Field::SpinAxis, Reason::OutOfRange));
+        assert!(e.to_string().starts_with("--spin-axis: "), "{e}");
+        let e = InputError::from(Error::invalid(Field::LaunchAngle, Reason::OutOfRange));
+        assert!(e.to_string().starts_with("--launch-angle: "), "{e}");
     }
 }
 

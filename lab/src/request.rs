@@ -725,6 +725,10 @@ pub struct EstimateRecord {
     pub residual_spin_rpm: f64,
     /// residual spin axis (deg).
     pub residual_spin_axis_deg: f64,
+    /// The consistency check's χ²: the cost at the most probable delivery (issue 34).
+    pub chi2: f64,
+    /// Its bound (the χ² quantile of the check's tail probability).
+    pub chi2_bound: f64,
     /// Levenberg–Marquardt iterations used.
     pub iterations: u8,
 }
@@ -732,7 +736,7 @@ pub struct EstimateRecord {
 impl EstimateRecord {
     /// The names of [`Self::values`], in order: the CSV columns of `carry batch estimate`
     /// and the keys of Python's `carry.estimate` (a flag and the iterations as numbers).
-    pub const COLUMNS: [&'static str; 27] = [
+    pub const COLUMNS: [&'static str; 29] = [
         "face_angle_deg",
         "face_angle_deg_sd",
         "club_path_deg",
@@ -759,12 +763,14 @@ impl EstimateRecord {
         "residual_launch_direction_deg",
         "residual_spin_rpm",
         "residual_spin_axis_deg",
+        "chi2",
+        "chi2_bound",
         "iterations",
     ];
 
     /// The record as numbers in the order of [`Self::COLUMNS`].
     #[must_use]
-    pub fn values(&self) -> [f64; 27] {
+    pub fn values(&self) -> [f64; 29] {
         [
             self.face_angle_deg,
             self.face_angle_deg_sd,
@@ -792,6 +798,8 @@ impl EstimateRecord {
             self.residual_launch_direction_deg,
             self.residual_spin_rpm,
             self.residual_spin_axis_deg,
+            self.chi2,
+            self.chi2_bound,
             f64::from(self.iterations),
         ]
     }
@@ -814,7 +822,7 @@ pub fn estimate(p: &Params, n: &Numerics, club: &MeasuredClub) -> Result<Estimat
     ) -> Result<EstimateRecord, Failure> {
         let head = compute::club::<T>(&p.club)?;
         let ball = compute::ball::<T>(p)?;
-        let (motion, _) = compute::launch_motion::<T>(p)?;
+        let measured = BallData::from_array(ball_data(p)?.to_array().map(lit::<T>));
         let rad = |d: Option<f64>| d.map(|d| lit::<T>(d.to_radians()));
         let data = ClubData {
             club_speed_mps: club.club_speed_mps.map(lit::<T>),
@@ -825,16 +833,14 @@ pub fn estimate(p: &Params, n: &Numerics, club: &MeasuredClub) -> Result<Estimat
         };
         let settings = Settings::<T> {
             posterior: n.posterior.core(),
-            ..Settings::typical(&p.club.preset.typical)
+            ..Settings::for_preset(p.club.preset)
         };
-        let e = est::estimate(
-            &head,
-            &ball,
-            &BallData::from_motion(&motion),
-            &data,
-            &settings,
-        )
-        .map_err(InputError::from)?;
+        let e =
+            est::estimate(&head, &ball, &measured, &data, &settings).map_err(InputError::from)?;
+        let c = e.consistency;
+        if !c.consistent {
+            return Err(inconsistent(&c, &settings.check).into());
+        }
         let (v, s, r) = (e.value, e.sd, e.residual);
         let d = |x: T| to_f64(x).to_degrees();
         let f = to_f64::<T>;
@@ -865,6 +871,8 @@ pub fn estimate(p: &Params, n: &Numerics, club: &MeasuredClub) -> Result<Estimat
             residual_launch_direction_deg: d(r.launch_direction_rad),
             residual_spin_rpm: f(r.spin_radps) * 30.0 / core::f64::consts::PI,
             residual_spin_axis_deg: d(r.spin_axis_rad),
+            chi2: f(c.chi2),
+            chi2_bound: f(c.bound),
             iterations: e.iterations,
         })
     }
@@ -872,6 +880,73 @@ pub fn estimate(p: &Params, n: &Numerics, club: &MeasuredClub) -> Result<Estimat
         Precision::F32 => run_in::<f32>(p, n, club),
         Precision::F64 => run_in::<f64>(p, n, club),
     }
+}
+
+/// The measured ball data of `p`'s launch as a launch monitor reports them (SI): ball
+/// speed, launch angle and direction, total spin and spin axis (from `--spin`/`--spin-axis`,
+/// or from `--backspin`/`--sidespin`). Read from the options themselves, so that a value out
+/// of range is named by its own option (a launch angle of 95° is not turned into a launch
+/// direction of 180° on the way).
+///
+/// # Errors
+/// Both spin forms given, a negative spin.
+pub fn ball_data(p: &Params) -> Result<carry_core::estimate::BallData<f64>, InputError> {
+    let l = &p.launch;
+    let (spin_rpm, axis_deg) = if l.spin_rpm.is_some() || l.spin_axis_deg.is_some() {
+        if l.backspin_rpm.is_some() || l.sidespin_rpm.is_some() {
+            return Err(InputError::new(
+                "spin, spin_axis",
+                "give either backspin and sidespin or spin and spin axis, not both",
+            ));
+        }
+        (
+            l.spin_rpm.unwrap_or(carry_io::params::DEFAULT_BACKSPIN_RPM),
+            l.spin_axis_deg.unwrap_or(0.0),
+        )
+    } else {
+        let back = l
+            .backspin_rpm
+            .unwrap_or(carry_io::params::DEFAULT_BACKSPIN_RPM);
+        let side = l.sidespin_rpm.unwrap_or(0.0);
+        (back.hypot(side), side.atan2(back).to_degrees())
+    };
+    if spin_rpm < 0.0 {
+        return Err(InputError::new("spin", "must not be negative"));
+    }
+    Ok(carry_core::estimate::BallData {
+        ball_speed_mps: l.ball_speed_mps,
+        launch_angle_rad: l.launch_angle_deg.to_radians(),
+        launch_direction_rad: l.launch_direction_deg.to_radians(),
+        spin_radps: spin_rpm * core::f64::consts::PI / 30.0,
+        spin_axis_rad: axis_deg.to_radians(),
+    })
+}
+
+/// The one-line error of an estimate whose data disagree (issue 34): the worst datum's
+/// option, by how many σ the most probable delivery misses it, and the χ² against its bound.
+#[must_use]
+pub fn inconsistent<T: Real>(
+    c: &carry_core::estimate::Consistency<T>,
+    check: &carry_core::estimate::Check<T>,
+) -> InputError {
+    use carry_core::estimate::Datum;
+    let stats = format!(
+        "χ² {:.1} of {} data, bound {:.1} at p = {}; worst {:.1}σ, bound {}σ",
+        to_f64(c.chi2),
+        c.dof,
+        to_f64(c.bound),
+        to_f64(check.tail_probability),
+        to_f64(c.worst_sd),
+        to_f64(check.max_shift_sd)
+    );
+    let reason = if c.worst == Datum::Club {
+        format!(
+            "the ball data disagree with this club: they need a delivery far from its typical one ({stats})"
+        )
+    } else {
+        format!("disagrees with the other data ({stats})")
+    };
+    InputError::new(carry_io::error::datum_key(c.worst), reason)
 }
 
 /// [`estimate`] over many rows in parallel on `threads` workers (`None`: all cores), each

@@ -324,7 +324,14 @@ fn estimate_paths<T: Real>() -> T {
         dynamic_loft_rad: if black_box(false) { Some(x(0.2)) } else { None },
     };
     match estimate(&head, &ball, &measured, &club, &settings) {
-        Ok(e) => e.value.face_angle_rad + e.sd.impact_height_m + e.residual.spin_radps,
+        Ok(e) => {
+            let c = e.consistency;
+            let checked = match e.checked() {
+                Ok(_) => T::zero(),
+                Err(_) => T::one(),
+            };
+            e.value.face_angle_rad + e.sd.impact_height_m + e.residual.spin_radps + c.chi2 + checked
+        }
         Err(_) => T::one(),
     }
 }

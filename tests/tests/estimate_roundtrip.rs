@@ -83,6 +83,10 @@ fn run<T: Real>(
         max_iterations: settings.max_iterations,
         tolerance: lit(settings.tolerance),
         posterior: settings.posterior,
+        check: carry_core::estimate::Check {
+            tail_probability: lit(settings.check.tail_probability),
+            max_shift_sd: lit(settings.check.max_shift_sd),
+        },
     };
     estimate(
         &head::<T>(p),
@@ -408,4 +412,95 @@ fn laplace_summary_under_covers_the_height() {
     for s in [share[4], share[5], share[7]] {
         assert!((0.45..0.6).contains(&s), "{share:?}");
     }
+}
+
+/// The χ² bound of the consistency check (Wilson–Hilferty with Abramowitz & Stegun's
+/// normal quantile) against exact quantiles (tables of the χ² distribution): within 1.5 %.
+#[test]
+fn chi2_bound_matches_the_tables() {
+    for (n, p, exact) in [
+        (5, 1e-3, 20.515),
+        (6, 1e-3, 22.458),
+        (10, 1e-3, 29.588),
+        (5, 0.05, 11.070),
+        (7, 0.05, 14.067),
+        (6, 0.01, 16.812),
+        (8, 1e-4, 31.828),
+    ] {
+        let q = carry_core::estimate::chi2_quantile::<f64>(n, p);
+        let q32 = carry_core::estimate::chi2_quantile::<f32>(n, p as f32);
+        assert!(
+            (q / exact - 1.0).abs() < 0.015,
+            "n {n} p {p}: {q} vs {exact}"
+        );
+        assert!((f64::from(q32) / q - 1.0).abs() < 1e-4, "{q32} vs {q}");
+    }
+}
+
+/// Issue 34's consistency check on shots that follow the model (deliveries from the default
+/// prior, default noise on the ball data and the club speed): the χ² test flags about its
+/// tail probability (0.05 here, to be measurable: asserted 2–10 %, the model is not
+/// linear), and the default check (p = 0.001, 4σ) almost none (< 1 %). The same shots with
+/// the measured club speed 8 m/s (18σ) too high are all flagged, the worst datum being the
+/// club speed or the ball speed that disagrees with it.
+#[test]
+fn consistency_check_flags_its_tail_and_inconsistent_club_speed() {
+    use carry_core::estimate::Datum;
+    let p = &PRESETS[0];
+    let mut rng = Rng(34);
+    let base = Settings::<f64>::typical(&p.typical);
+    let mut loose = base;
+    loose.check.tail_probability = 0.05;
+    loose.check.max_shift_sd = 1e6;
+    let sigma = base.noise.ball.to_array();
+    let speed_sigma = base.noise.club.club_speed_mps;
+    let n = 1000;
+    let (mut done, mut loose_flags, mut default_flags, mut off_flags) = (0, 0, 0, 0);
+    while done < n {
+        let Some((truth, y)) = draw(p, &mut rng) else {
+            continue;
+        };
+        let y = BallData::from_array(core::array::from_fn(|i| {
+            y.to_array()[i] + sigma[i] * rng.normal()
+        }));
+        if y.validated().is_err() {
+            continue;
+        }
+        let speed = truth.club_speed_mps + speed_sigma * rng.normal();
+        let club = ClubData {
+            club_speed_mps: Some(speed),
+            ..ClubData::default()
+        };
+        let e = run::<f64>(p, &y, &club, &loose).expect("estimate");
+        assert_eq!(e.consistency.dof, 6);
+        loose_flags += usize::from(!e.consistency.consistent);
+        let e = run::<f64>(p, &y, &club, &base).expect("estimate");
+        default_flags += usize::from(e.checked().is_err());
+        let off = ClubData {
+            club_speed_mps: Some(speed + 8.0),
+            ..ClubData::default()
+        };
+        match run::<f64>(p, &y, &off, &base).map(carry_core::estimate::Estimate::checked) {
+            Ok(Err(carry_core::Error::Inconsistent { worst })) => {
+                assert!(
+                    matches!(worst, Datum::ClubSpeed | Datum::BallSpeed),
+                    "{worst:?}"
+                );
+                off_flags += 1;
+            }
+            Ok(Ok(_)) => {}
+            other => panic!("{other:?}"),
+        }
+        done += 1;
+    }
+    let share = |k: usize| k as f64 / n as f64;
+    println!(
+        "flagged: p = 0.05 {:.3}, default {:.4}, club speed +8 m/s {:.3}",
+        share(loose_flags),
+        share(default_flags),
+        share(off_flags)
+    );
+    assert!((0.02..=0.10).contains(&share(loose_flags)), "{loose_flags}");
+    assert!(share(default_flags) < 0.01, "{default_flags}");
+    assert_eq!(off_flags, n);
 }

@@ -128,7 +128,7 @@ impl<T: Real> BallData<T> {
             Field::LaunchDirection,
         )?;
         range(self.spin_radps, T::zero(), lit(2000.0), Field::BallSpin)?;
-        range(self.spin_axis_rad, -pi, pi, Field::BallSpin)?;
+        range(self.spin_axis_rad, -pi, pi, Field::SpinAxis)?;
         Ok(*self)
     }
 }
@@ -201,6 +201,17 @@ impl<T: Real> Noise<T> {
         }
     }
 
+    /// This noise with the ball data's 1σ multiplied by `factor` (the club data's unchanged):
+    /// the σ calibration of issue 34, where `factor` stands for the impact model's own
+    /// error on real shots ([`DRIVER_NOISE_SCALE`]; docs/estimate.md §8).
+    #[must_use]
+    pub fn with_ball_scaled(&self, factor: T) -> Self {
+        Self {
+            ball: BallData::from_array(self.ball.to_array().map(|s| s * factor)),
+            club: self.club,
+        }
+    }
+
     fn validated(&self) -> Result<Self> {
         for s in self.ball.to_array().into_iter().chain(self.club.to_array()) {
             if !(s.is_finite() && s > T::zero()) {
@@ -230,6 +241,198 @@ pub const PRIOR_SD_STRIKE_M: [f64; 2] = [0.012, 0.008];
 /// Default prior spread of the club speed, as a fraction of the typical: an estimate.
 pub const PRIOR_SD_SPEED_FRACTION: f64 = 0.10;
 
+/// The amateur driver prior's means, fitted on the single TrackMan drives (issue 34; SI, in
+/// the order of [`Unknowns`]: face, path, dynamic loft, attack (rad), strike toe and
+/// height (m), club speed (m/s)): the medians of TrackMan's club data over the 4,131 drives
+/// that carry them with a full launch, and of the strike location over the 996 that carry it.
+/// Reproduced, and to be refitted after a change of the impact model, by
+/// `cargo run --release -p carry-lab --example estimate_single_shots` (docs/estimate.md §8).
+pub const DRIVER_PRIOR_MEAN: [f64; 7] = [
+    0.00436332, // face +0.25°
+    0.0272271,  // path +1.56° (in-to-out)
+    0.266163,   // dynamic loft 15.25°
+    -0.0116937, // attack −0.67°
+    -0.0081,    // toe −8.1 mm (toward the heel)
+    0.0063,     // height +6.3 mm
+    42.47,      // club speed (95.0 mph)
+];
+/// The amateur driver prior's spreads (1σ), fitted with [`DRIVER_PRIOR_MEAN`]: 1.4826 × the
+/// median absolute deviation of the same rows (the sd of their normal bulk: the club data
+/// have heavy tails, a plain sd of the dynamic loft is 7.3° against 5.5°). SI, the order of
+/// [`Unknowns`].
+pub const DRIVER_PRIOR_SD: [f64; 7] = [
+    0.074002,  // face 4.24°
+    0.07662,   // path 4.39°
+    0.0954695, // dynamic loft 5.47°
+    0.0645772, // attack 3.70°
+    0.0163,    // toe 16.3 mm
+    0.0102,    // height 10.2 mm
+    5.11,      // club speed
+];
+/// The σ calibration of the driver on real shots: the ball data's noise
+/// ([`Noise::launch_monitor`]) multiplied by this ([`Noise::with_ball_scaled`]), so that the
+/// median χ² of the most probable deliveries on the drives equals its median under the model
+/// ("reduced χ² = 1", on medians because the misfits have heavy tails; docs/estimate.md §8).
+/// It stands for the impact model's own error, which the spec-sheet noise of the launch
+/// monitor does not contain.
+pub const DRIVER_NOISE_SCALE: f64 = 3.3;
+
+/// The default tail probability of the consistency check ([`Check::tail_probability`]): a
+/// consistent shot is flagged by the χ² bound once in 1,000.
+pub const CHECK_TAIL_PROBABILITY: f64 = 1e-3;
+/// The default [`Check::max_shift_sd`]: a measured datum that the most probable delivery
+/// misses by more than 4σ (a consistent datum: once in ≈ 16,000) is flagged.
+pub const CHECK_MAX_SHIFT_SD: f64 = 4.0;
+
+/// When the data are judged to disagree (with each other, or with the club): the bounds of
+/// the consistency check ([`Consistency`]; docs/estimate.md §8).
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct Check<T> {
+    /// The χ² test's tail probability, in (0, 0.5]: the cost at the most probable delivery
+    /// is compared with the χ² quantile of this upper tail for as many degrees of freedom
+    /// as data (the five ball numbers and the measured club data).
+    pub tail_probability: T,
+    /// A measured datum (ball or club) that the most probable delivery misses by more than
+    /// this many of its σ is flagged, whatever the χ²; positive.
+    pub max_shift_sd: T,
+}
+
+impl<T: Real> Check<T> {
+    /// [`CHECK_TAIL_PROBABILITY`] and [`CHECK_MAX_SHIFT_SD`].
+    #[must_use]
+    pub fn standard() -> Self {
+        Self {
+            tail_probability: lit(CHECK_TAIL_PROBABILITY),
+            max_shift_sd: lit(CHECK_MAX_SHIFT_SD),
+        }
+    }
+
+    fn validated(&self) -> Result<Self> {
+        let p = self.tail_probability;
+        if !(p > T::zero() && p <= lit(0.5)) {
+            return Err(Error::invalid(Field::ConsistencyBound, Reason::OutOfRange));
+        }
+        if !(self.max_shift_sd.is_finite() && self.max_shift_sd > T::zero()) {
+            return Err(Error::invalid(Field::ConsistencyBound, Reason::NotPositive));
+        }
+        Ok(*self)
+    }
+}
+
+/// One term of the estimator's cost: a measured number, or the club's prior.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub enum Datum {
+    /// The measured ball speed.
+    BallSpeed,
+    /// The measured launch angle.
+    LaunchAngle,
+    /// The measured launch direction.
+    LaunchDirection,
+    /// The measured spin rate.
+    Spin,
+    /// The measured spin axis.
+    SpinAxis,
+    /// The measured club speed.
+    ClubSpeed,
+    /// The measured attack angle.
+    AttackAngle,
+    /// The measured club path.
+    ClubPath,
+    /// The measured face angle.
+    FaceAngle,
+    /// The measured dynamic loft.
+    DynamicLoft,
+    /// The club: the delivery the data need is far from the club's prior (its typical
+    /// delivery), e.g. ball data no swing of this club gives.
+    Club,
+}
+
+impl Datum {
+    /// The ball data in the order of [`BallData::to_array`].
+    pub const BALL: [Self; 5] = [
+        Self::BallSpeed,
+        Self::LaunchAngle,
+        Self::LaunchDirection,
+        Self::Spin,
+        Self::SpinAxis,
+    ];
+
+    /// A short human name.
+    #[must_use]
+    pub const fn name(self) -> &'static str {
+        match self {
+            Self::BallSpeed => "ball speed",
+            Self::LaunchAngle => "launch angle",
+            Self::LaunchDirection => "launch direction",
+            Self::Spin => "spin",
+            Self::SpinAxis => "spin axis",
+            Self::ClubSpeed => "club speed",
+            Self::AttackAngle => "attack angle",
+            Self::ClubPath => "club path",
+            Self::FaceAngle => "face angle",
+            Self::DynamicLoft => "dynamic loft",
+            Self::Club => "club",
+        }
+    }
+}
+
+impl core::fmt::Display for Datum {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+/// The verdict of the consistency check: do the data agree with each other and with the
+/// club? Computed for every estimate at the most probable delivery `x̂` (no forward
+/// evaluation), from its cost terms `z` = (modelled − measured)/σ of each ball number,
+/// (x̂ − c)/σ of each measured club datum and (x̂ − μ)/s of each prior term:
+///
+/// ```text
+/// χ² = Σ z²   against   χ²_{1−p}(n),  n = 5 + measured club data   (Wilson–Hilferty)
+/// ```
+///
+/// For a linear model with Gaussian noise and prior the minimum cost is exactly χ² with
+/// `n` degrees of freedom (the marginal of the data). Inconsistent when `χ² > bound`, or
+/// when a measured datum's `|z|` exceeds [`Check::max_shift_sd`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct Consistency<T> {
+    /// The cost at the most probable delivery, `Σ z²`.
+    pub chi2: T,
+    /// Its degrees of freedom: the number of data (5 + measured club data).
+    pub dof: u8,
+    /// The χ² bound: the quantile of [`Check::tail_probability`]'s upper tail.
+    pub bound: T,
+    /// The term with the largest `|z|` (a measured datum, or [`Datum::Club`]).
+    pub worst: Datum,
+    /// Its `|z|`: by how many of its σ the most probable delivery misses it.
+    pub worst_sd: T,
+    /// Whether the data passed: `χ² ≤ bound` and every measured `|z| ≤ max_shift_sd`.
+    pub consistent: bool,
+}
+
+/// The upper-tail quantile `χ²_{1−p}(n)`: Wilson & Hilferty's cube-root normal
+/// approximation (PNAS 17, 1931), `n (1 − 2/9n + z √(2/9n))³`, with the normal quantile
+/// `z` of the upper tail `p` from Abramowitz & Stegun 26.2.23 (|error| < 4.5·10⁻⁴). Within
+/// 1.5 % of the exact quantile for `n` = 5–10, `p` = 10⁻⁴–0.05 (tested).
+#[must_use]
+pub fn chi2_quantile<T: Real>(n: u8, p: T) -> T {
+    let p = crate::real::smaller(crate::real::larger(p, lit(1e-30)), lit(0.5));
+    let t = (-(p.ln() + p.ln())).root();
+    let z = t
+        - (lit::<T>(2.515_517) + lit::<T>(0.802_853) * t + lit::<T>(0.010_328) * t * t)
+            / (T::one()
+                + lit::<T>(1.432_788) * t
+                + lit::<T>(0.189_269) * t * t
+                + lit::<T>(0.001_308) * t * t * t);
+    let n = lit::<T>(f64::from(n.max(1)));
+    let a = lit::<T>(2.0 / 9.0) / n;
+    let c = T::one() - a + z * a.root();
+    n * c * c * c
+}
+
 impl<T: Real> Prior<T> {
     /// The prior of a club's typical delivery: square and centred across the face, the
     /// typical speed, attack, dynamic loft and strike height, with the default spreads.
@@ -257,6 +460,23 @@ impl<T: Real> Prior<T> {
                 club_speed_mps: lit(t.club_speed_mps * PRIOR_SD_SPEED_FRACTION),
             },
         }
+    }
+
+    /// The prior of a fitted table ([`DRIVER_PRIOR_MEAN`], [`DRIVER_PRIOR_SD`]): SI, in the
+    /// order of [`Unknowns`].
+    #[must_use]
+    pub fn from_table(mean: &[f64; 7], sd: &[f64; 7]) -> Self {
+        Self {
+            mean: Unknowns::from_array(mean.map(lit)),
+            sd: Unknowns::from_array(sd.map(lit)),
+        }
+    }
+
+    /// The amateur driver prior fitted on the single TrackMan drives (issue 34;
+    /// [`DRIVER_PRIOR_MEAN`], [`DRIVER_PRIOR_SD`]).
+    #[must_use]
+    pub fn amateur_driver() -> Self {
+        Self::from_table(&DRIVER_PRIOR_MEAN, &DRIVER_PRIOR_SD)
     }
 
     /// This prior with every spread multiplied by `factor` (`factor ≫ 1`: a prior that
@@ -323,6 +543,8 @@ pub struct Settings<T> {
     pub tolerance: T,
     /// How the posterior is summarised.
     pub posterior: Posterior,
+    /// When the data are judged inconsistent ([`Estimate::consistency`]).
+    pub check: Check<T>,
 }
 
 impl<T: Real> Settings<T> {
@@ -336,6 +558,24 @@ impl<T: Real> Settings<T> {
             max_iterations: MAX_ITERATIONS,
             tolerance: lit(TOLERANCE),
             posterior: Posterior::Profile,
+            check: Check::standard(),
+        }
+    }
+
+    /// The defaults of a preset: for the driver, the prior and σ calibration fitted on the
+    /// single TrackMan drives ([`Prior::amateur_driver`], [`DRIVER_NOISE_SCALE`]; issue 34);
+    /// for every other club, [`Settings::typical`] of its typical delivery.
+    #[must_use]
+    pub fn for_preset(preset: &crate::Preset) -> Self {
+        let typical = Self::typical(&preset.typical);
+        if preset.name == "driver" {
+            Self {
+                noise: typical.noise.with_ball_scaled(lit(DRIVER_NOISE_SCALE)),
+                prior: Prior::amateur_driver(),
+                ..typical
+            }
+        } else {
+            typical
         }
     }
 }
@@ -401,9 +641,28 @@ pub struct Estimate<T> {
     pub iterations: u8,
     /// Whether the club speed was estimated (not measured).
     pub club_speed_estimated: bool,
+    /// Whether the data agree with each other and with the club, and if not which datum
+    /// is the worst ([`Settings::check`]).
+    pub consistency: Consistency<T>,
 }
 
 impl<T: Real> Estimate<T> {
+    /// This estimate, or [`Error::Inconsistent`] naming the worst datum when the
+    /// consistency check failed (what the shells report; the estimate itself is the best
+    /// compromise between data that disagree).
+    ///
+    /// # Errors
+    /// [`Error::Inconsistent`] when `!self.consistency.consistent`.
+    pub fn checked(self) -> Result<Self> {
+        if self.consistency.consistent {
+            Ok(self)
+        } else {
+            Err(Error::Inconsistent {
+                worst: self.consistency.worst,
+            })
+        }
+    }
+
     /// The estimated delivery as a core [`crate::Delivery`] in TrackMan's convention (no
     /// lie, no club spin): feed it to [`crate::Delivery::strike_in`] to see its launch.
     #[must_use]
@@ -427,8 +686,8 @@ impl<T: Real> Estimate<T> {
 /// the club, with `settings`.
 ///
 /// # Errors
-/// [`Error::InvalidInput`] for a non-finite or out-of-range measurement, noise, prior or
-/// iteration budget; the forward model's errors at the start (e.g. [`Error::OffFace`] for
+/// [`Error::InvalidInput`] for a non-finite or out-of-range measurement, noise, prior,
+/// iteration budget or consistency bound; the forward model's errors at the start (e.g. [`Error::OffFace`] for
 /// a prior strike off the face); [`Error::IllPosed`] when the normal matrix is singular in
 /// the precision; [`Error::NoConvergence`] when the iteration budget runs out.
 pub fn estimate<T: Real>(
@@ -448,6 +707,7 @@ pub fn estimate<T: Real>(
     if !(tolerance > T::zero() && tolerance <= T::one()) {
         return Err(Error::invalid(Field::Tolerance, Reason::OutOfRange));
     }
+    settings.check.validated()?;
     let half = lit::<T>(FRAC_PI_2);
     if let Some(v) = club_data.club_speed_mps {
         range(v, T::zero(), lit(150.0), Field::ClubSpeed)?;

@@ -26,7 +26,10 @@
 
 use super::model::{Model, SPEED, Unknowns};
 use super::spd::Cholesky;
-use super::{BallData, ClubData, ClubEstimate, Estimate, Posterior, Settings};
+use super::{
+    BallData, Check, ClubData, ClubEstimate, Consistency, Datum, Estimate, Posterior, Settings,
+    chi2_quantile,
+};
 use crate::error::{Error, Result};
 use crate::real::{Real, lit};
 use core::f64::consts::PI;
@@ -125,6 +128,7 @@ pub(super) fn run<T: Real>(
         max_iterations,
         tolerance,
         posterior: summary,
+        check,
     } = *settings;
     let measured_club = [
         club_data.face_angle_rad,
@@ -169,7 +173,87 @@ pub(super) fn run<T: Real>(
     };
     let start = start(&problem, measured, &measured_club)?;
     let solution = iterate(&problem, start, max_iterations, tolerance)?;
-    posterior(&problem, &solution, club_data, summary)
+    let mut e = posterior(&problem, &solution, club_data, summary)?;
+    e.consistency = consistency(
+        &problem.residual(&solution.f),
+        &solution.x,
+        &measured_club,
+        settings,
+        &check,
+    );
+    Ok(e)
+}
+
+/// The order of the measured club data in the unknowns (face, path, loft, attack, –, –,
+/// speed).
+const CLUB_DATA: [Option<Datum>; 7] = [
+    Some(Datum::FaceAngle),
+    Some(Datum::ClubPath),
+    Some(Datum::DynamicLoft),
+    Some(Datum::AttackAngle),
+    None,
+    None,
+    Some(Datum::ClubSpeed),
+];
+
+/// The consistency check at the most probable delivery `x` ([`Consistency`]): the cost's
+/// terms `z` of the ball data (the normalised residuals `r`), of the measured club data and
+/// of the prior, their sum of squares against the χ² bound of as many degrees of freedom
+/// as data, and the largest measured `|z|` against `max_shift_sd`.
+fn consistency<T: Real>(
+    r: &SVector<T, 5>,
+    x: &V7<T>,
+    measured_club: &[Option<T>; 7],
+    settings: &Settings<T>,
+    check: &Check<T>,
+) -> Consistency<T> {
+    let mut chi2 = T::zero();
+    let mut dof: u8 = 5;
+    let mut worst = (Datum::Club, -T::one());
+    let mut worst_measured = T::zero();
+    for (z, datum) in r.iter().zip(Datum::BALL) {
+        chi2 += *z * *z;
+        let a = z.abs();
+        worst_measured = crate::real::larger(worst_measured, a);
+        if a > worst.1 {
+            worst = (datum, a);
+        }
+    }
+    let prior_mean = settings.prior.mean.to_array();
+    let prior_sd = settings.prior.sd.to_array();
+    let club_sd = settings.noise.club.to_array();
+    for (i, xi) in x.iter().enumerate() {
+        let (Some(mu), Some(s)) = (prior_mean.get(i), prior_sd.get(i)) else {
+            continue;
+        };
+        let z = (*xi - *mu) / *s;
+        chi2 += z * z;
+        if z.abs() > worst.1 {
+            worst = (Datum::Club, z.abs());
+        }
+        if let (Some(Some(c)), Some(sc), Some(Some(datum))) =
+            (measured_club.get(i), club_sd.get(i), CLUB_DATA.get(i))
+        {
+            let z = (*xi - *c) / *sc;
+            chi2 += z * z;
+            dof += 1;
+            let a = z.abs();
+            worst_measured = crate::real::larger(worst_measured, a);
+            if a > worst.1 {
+                worst = (*datum, a);
+            }
+        }
+    }
+    let bound = chi2_quantile(dof, check.tail_probability);
+    Consistency {
+        chi2,
+        dof,
+        bound,
+        worst: worst.0,
+        worst_sd: crate::real::larger(worst.1, T::zero()),
+        // NaN-proof: consistent only when both tests pass on finite numbers
+        consistent: chi2 <= bound && worst_measured <= check.max_shift_sd,
+    }
 }
 
 /// A good start: the centre `m`, moved so that its launch matches the measured one to
@@ -637,5 +721,14 @@ fn posterior<T: Real>(
         residual: BallData::from_array(difference(f, &problem.y)),
         iterations: *iterations,
         club_speed_estimated: club_data.club_speed_mps.is_none(),
+        // filled in by `run`
+        consistency: Consistency {
+            chi2: T::zero(),
+            dof: 5,
+            bound: T::zero(),
+            worst: Datum::Club,
+            worst_sd: T::zero(),
+            consistent: true,
+        },
     })
 }

@@ -166,7 +166,7 @@ static void bad_input(void) {
     CHECK_CODE(carry_impact_f64(&imp, NULL), CARRY_ERR_NULL_POINTER);
     CHECK_CODE(carry_scene_default_f64(NULL), CARRY_ERR_NULL_POINTER);
     /* Every code has a message; unknown codes too. */
-    for (int code = CARRY_OK; code <= CARRY_ERR_OTHER; ++code) {
+    for (int code = CARRY_OK; code <= CARRY_ERR_INCONSISTENT; ++code) {
         const char *m = carry_error_message((uint32_t)code);
         CHECK(m != NULL && m[0] != 0);
     }
