@@ -145,6 +145,12 @@ pub enum Field {
     PriorSpread,
     /// The estimator's iteration budget.
     Iterations,
+    // --- launch from the flight (launch_fit) ---
+    /// A flight observation (a track point, a Doppler sample, a summary) or a measured
+    /// launch value.
+    Observation,
+    /// Spin axis (rad).
+    SpinAxis,
 }
 
 /// Why an input was rejected.
@@ -212,6 +218,12 @@ pub enum Error {
     /// The estimator's normal matrix is numerically singular: the measurements and priors
     /// do not pin the unknowns down in this precision.
     IllPosed,
+    /// The launch fit ([`crate::launch_fit`]) has fewer flight observations than free
+    /// unknowns.
+    TooFewObservations,
+    /// The launch fit's observations do not pin this unknown down (its posterior spread
+    /// stays near its prior's).
+    Unidentifiable(Field),
 }
 
 /// Result alias of the core.
@@ -293,6 +305,8 @@ impl Field {
             Self::PriorMean => "prior mean",
             Self::PriorSpread => "prior spread",
             Self::Iterations => "iteration budget",
+            Self::Observation => "observation",
+            Self::SpinAxis => "spin axis",
         }
     }
 }
@@ -346,6 +360,12 @@ impl fmt::Display for Error {
             Self::IllPosed => f.write_str(
                 "the estimate is ill-posed: the data and priors do not determine the delivery",
             ),
+            Self::TooFewObservations => {
+                f.write_str("too few flight observations for the unknowns of the launch")
+            }
+            Self::Unidentifiable(field) => {
+                write!(f, "the flight observations do not determine the {field}")
+            }
         }
     }
 }
