@@ -11,7 +11,7 @@ say() { printf -- '--- %s (t=%ss)\n' "$*" "$((SECONDS - start))"; }
 
 say "no-panic link: release images of the impact and flight paths and of the C API, undefined panic handler"
 (cd nopanic && cargo build --release --target thumbv7em-none-eabihf)
-echo "nopanic: linked — no panic path reachable from the core's impact, flight and estimate entry points"
+echo "nopanic: linked — no panic path reachable from the core's impact, flight, estimate and launch-fit entry points"
 echo "nopanic: linked — no panic path reachable from the C API's entry points (carry-ffi, bin ffi)"
 
 say "negative control: one deliberate panic must fail the link"
@@ -54,6 +54,7 @@ runs_for() {
     cli) base=12000 ;;
     ffi) base=120000 ;;
     estimate) base=20000 ;;
+    launch_fit) base=8000 ;;
     flight) base=80000 ;;
     ground) base=150000 ;;
     impact) base=5000000 ;;

@@ -147,6 +147,10 @@ pub enum Field {
     Iterations,
     /// A bound of the estimator's consistency check (tail probability or σ count).
     ConsistencyBound,
+    // --- launch from the flight (launch_fit) ---
+    /// A flight observation (a track point, a Doppler sample, a summary) or a measured
+    /// launch value.
+    Observation,
     /// Spin axis (rad).
     SpinAxis,
 }
@@ -223,6 +227,12 @@ pub enum Error {
         /// The datum the most probable delivery misses by the most σ.
         worst: crate::estimate::Datum,
     },
+    /// The launch fit ([`crate::launch_fit`]) has fewer flight observations than free
+    /// unknowns.
+    TooFewObservations,
+    /// The launch fit's observations do not pin this unknown down (its posterior spread
+    /// stays near its prior's).
+    Unidentifiable(Field),
 }
 
 /// Result alias of the core.
@@ -305,6 +315,7 @@ impl Field {
             Self::PriorSpread => "prior spread",
             Self::Iterations => "iteration budget",
             Self::ConsistencyBound => "consistency bound",
+            Self::Observation => "observation",
             Self::SpinAxis => "spin axis",
         }
     }
@@ -363,6 +374,12 @@ impl fmt::Display for Error {
                 f,
                 "the data disagree with each other or with the club (worst: the {worst})"
             ),
+            Self::TooFewObservations => {
+                f.write_str("too few flight observations for the unknowns of the launch")
+            }
+            Self::Unidentifiable(field) => {
+                write!(f, "the flight observations do not determine the {field}")
+            }
         }
     }
 }

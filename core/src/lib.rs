@@ -41,6 +41,7 @@ pub mod face;
 pub mod geometry;
 pub mod impact;
 pub mod launch;
+pub mod launch_fit;
 pub mod linalg;
 pub mod presets;
 pub mod real;

@@ -61,10 +61,16 @@ impl<T: Real> defmt::Format for Store<'_, T> {
 /// `interval_s` from launch (interpolated, not step ends), then the landing. When the
 /// buffer fills, recording stops and [`FlightOutcome::recording_full`](crate::flight::FlightOutcome::recording_full) is set — the
 /// flight itself completes normally.
+///
+/// A recorder may instead sample at given times ([`Recorder::at_times`]): the flight's
+/// dense output read where a launch monitor observed the ball (the launch from the flight,
+/// [`crate::launch_fit`]), without integrating again per observation.
 #[derive(Debug)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct Recorder<'a, T: Real> {
     pub(crate) interval_s: T,
+    /// The sample times when given explicitly (sorted, not negative); `None`: `k·interval_s`.
+    times: Option<&'a [T]>,
     samples: Store<'a, T>,
     pub(crate) full: bool,
 }
@@ -82,6 +88,7 @@ impl<'a, T: Real> Recorder<'a, T> {
         buffer.clear();
         Ok(Self {
             interval_s,
+            times: None,
             samples: Store::Buffer(buffer.as_mut_view()),
             full: false,
         })
@@ -96,9 +103,64 @@ impl<'a, T: Real> Recorder<'a, T> {
         sink.clear();
         Ok(Self {
             interval_s,
+            times: None,
             samples: Store::Sink(sink),
             full: false,
         })
+    }
+
+    /// A recorder handing `sink` (cleared) one sample at each of `times` (s since launch)
+    /// that the flight reaches, read from the integrator's dense output, then the landing.
+    ///
+    /// # Errors
+    /// [`Field::RecordInterval`] when a time is not finite, negative, or earlier than the
+    /// one before it.
+    pub fn at_times(times: &'a [T], sink: &'a mut dyn SampleSink<T>) -> Result<Self> {
+        let mut last = T::zero();
+        for &t in times {
+            if !(t.is_finite() && t >= last) {
+                return Err(crate::error::Error::invalid(
+                    Field::RecordInterval,
+                    crate::error::Reason::OutOfRange,
+                ));
+            }
+            last = t;
+        }
+        sink.clear();
+        Ok(Self {
+            // The interval is unused with explicit times; any positive value.
+            interval_s: T::one(),
+            times: Some(times),
+            samples: Store::Sink(sink),
+            full: false,
+        })
+    }
+
+    /// The time of sample `k` (s since launch): `k·Δ`, or the `k`-th given time (`None`
+    /// past the last one).
+    #[inline]
+    pub(crate) fn sample_time(&self, k: u32) -> Option<T> {
+        match self.times {
+            None => Some(lit::<T>(f64::from(k)) * self.interval_s),
+            Some(times) => usize::try_from(k).ok().and_then(|k| times.get(k)).copied(),
+        }
+    }
+
+    /// With explicit times: the index of the first at or after `t` (s since launch).
+    pub(crate) fn first_given_at_or_after(&self, t: T) -> Option<u32> {
+        let times = self.times?;
+        let k = times.iter().take_while(|&&ts| ts < t).count();
+        Some(u32::try_from(k).unwrap_or(u32::MAX))
+    }
+
+    /// With explicit times: the first strictly after `t` (s since launch), if any and the
+    /// recorder has room; `Some(None)` when there is none.
+    pub(crate) fn given_after(&self, t: T) -> Option<Option<T>> {
+        let times = self.times?;
+        if self.full {
+            return Some(None);
+        }
+        Some(times.iter().copied().find(|&ts| ts > t))
     }
 
     /// The samples recorded by the last flight (empty for a [`Recorder::with_sink`]: the
@@ -141,6 +203,25 @@ impl<'a, T: Real> Recorder<'a, T> {
         axis: &Vector3<T>,
         state_at: impl Fn(T) -> (Vector3<T>, Vector3<T>, T),
     ) {
+        if let Some(times) = self.times {
+            // Explicit times strictly inside the hop.
+            for &ts in times {
+                let t = ts - from_time;
+                if self.full || !(t < duration) {
+                    break;
+                }
+                if t > T::zero() {
+                    let (position_m, velocity_mps, spin) = state_at(t);
+                    self.push(Sample {
+                        time_s: ts,
+                        position_m,
+                        velocity_mps,
+                        spin_radps: axis * spin,
+                    });
+                }
+            }
+            return;
+        }
         let dt = self.interval_s;
         let k = crate::real::to_f64(from_time / dt);
         // Float-to-int `as` saturates (never panics).

@@ -13,6 +13,8 @@
 //! * [`dispersion`]: Monte-Carlo over delivery noise, landing statistics and ellipse.
 //! * [`normalize`]: the carry of a launch in standard conditions, and back.
 //! * [`bag`]: the bag from delivery alone against TrackMan's 2023 tour averages.
+//! * [`launch_fit`]: the launch from the flight as a typed request (`carry estimate --from
+//!   flight`), and the track file reader.
 //! * [`drives`]: single TrackMan drives (`../shared/data/trackman_amateur_drives.csv`), read
 //!   where they lie, with session blocks for cross-validation.
 //!
@@ -29,6 +31,7 @@ pub mod drives;
 pub mod error;
 pub mod fit;
 pub mod ground_fit;
+pub mod launch_fit;
 pub mod normalize;
 pub mod optimize;
 pub mod request;

@@ -336,6 +336,43 @@ fn estimate_paths<T: Real>() -> T {
     }
 }
 
+/// The launch from the flight (issue 36): spin and axis fitted to opaque summaries and a
+/// track, with and without wind and air density.
+fn launch_fit_paths<T: Real>() -> T {
+    use carry_core::launch_fit::{
+        Datum, LaunchValues, Observations, Settings, TrackPoint, Workspace, fit_launch,
+    };
+    let measured = LaunchValues {
+        ball_speed_mps: Some(Datum::new(x(66.0), x(0.2))),
+        launch_angle_rad: Some(Datum::new(x(0.22), x(0.004))),
+        launch_direction_rad: Some(Datum::new(x(0.01), x(0.005))),
+        spin_radps: None,
+        spin_axis_rad: None,
+    };
+    let mut obs = Observations::<T> {
+        apex_height_m: Some(Datum::new(x(30.0), x(0.5))),
+        carry_m: Some(Datum::new(x(210.0), x(1.0))),
+        side_m: Some(Datum::new(x(5.0), x(0.5))),
+        ..Observations::default()
+    };
+    let _ = obs.track.push(TrackPoint {
+        time_s: x(0.5),
+        position_m: v3(30.0, 6.0, 0.3),
+        sd_m: x(0.1),
+    });
+    let settings = Settings::<T> {
+        fit_wind: black_box(false),
+        fit_air_density: black_box(false),
+        max_iterations: black_box(30),
+        ..Settings::default()
+    };
+    let mut ws = Workspace::<T>::new();
+    match fit_launch(&Ball::standard(), &Scene::default(), &measured, &obs, &settings, &mut ws) {
+        Ok(f) => f.value.spin_radps + f.sd.spin_axis_rad,
+        Err(_) => T::one(),
+    }
+}
+
 #[cortex_m_rt::entry]
 fn main() -> ! {
     // The negative control (`--features canary`): an index the optimiser cannot check, so
@@ -351,6 +388,8 @@ fn main() -> ! {
         black_box(bounce_paths::<f64>());
         black_box(estimate_paths::<f32>());
         black_box(estimate_paths::<f64>());
+        black_box(launch_fit_paths::<f32>());
+        black_box(launch_fit_paths::<f64>());
     }
 }
 

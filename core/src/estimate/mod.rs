@@ -24,7 +24,7 @@
 
 mod model;
 mod solve;
-mod spd;
+pub(crate) mod spd;
 
 pub use model::{Unknowns, predict};
 

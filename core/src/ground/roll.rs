@@ -93,6 +93,9 @@ impl<T: Real, N: Normal<T>> Roll<'_, '_, T, N> {
         if r.is_full() {
             return None;
         }
+        if let Some(given) = r.given_after(self.start_time + t) {
+            return given.map(|ts| ts - self.start_time);
+        }
         let dt = r.interval();
         let k = to_f64((self.start_time + t) / dt);
         let k = if k.is_finite() && k > 0.0 {

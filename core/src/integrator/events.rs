@@ -248,6 +248,9 @@ impl<'r, 'b, T: Real> Tracker<'r, 'b, T> {
     ) -> Self {
         // The first sample time k·Δ at or after the offset (saturating, never panics).
         let next_sample = recorder.as_deref().map_or(0, |r| {
+            if let Some(k) = r.first_given_at_or_after(time_offset) {
+                return k;
+            }
             let k = to_f64(time_offset / r.interval_s);
             let k = if k.is_finite() && k > 0.0 { k } else { 0.0 };
             // Float-to-int `as` saturates; ceil without std: the truncation, plus one when short.
@@ -424,7 +427,9 @@ impl<'r, 'b, T: Real> Tracker<'r, 'b, T> {
         // landing is within rounding of a sample (a fuzz find: a landing at t ≈ 1e-285 s).
         let landing_time = landing.map(|th| t0 + th * h + offset);
         while !rec.full {
-            let ts = lit::<T>(f64::from(self.next_sample)) * rec.interval_s;
+            let Some(ts) = rec.sample_time(self.next_sample) else {
+                break;
+            };
             if ts < offset {
                 // Before this hop began (the first index after the offset rounded down: a
                 // fuzz find with a 5e243 s interval). The last index repeats its time.

@@ -1,8 +1,9 @@
 //! `carry estimate`: club data from ball data — the impact model run backwards (issue 23;
 //! `carry_core::estimate`, docs/estimate.md).
 
+use super::from_flight::FlightObsArgs;
 use super::output;
-use crate::cli::{ClubArgs, LaunchArgs, OutputArgs, PrecisionArgs};
+use crate::cli::{ClubArgs, LaunchArgs, OutputArgs, PrecisionArgs, SceneArgs};
 use carry_io::compute::{Numerics, PosteriorChoice};
 use carry_io::error::Failure;
 use carry_io::params::{Key, Params};
@@ -36,11 +37,30 @@ pub struct MeasuredArgs {
     pub dynamic_loft: Option<f64>,
 }
 
+/// What `carry estimate` infers.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, clap::ValueEnum)]
+pub enum EstimateFrom {
+    /// Club data from ball data: the impact run backwards (docs/estimate.md).
+    #[default]
+    Ball,
+    /// The launch quantities not measured (spin, axis, …) from what the monitor saw of
+    /// the flight: the flight run backwards (docs/launch_fit.md).
+    Flight,
+}
+
 /// `carry estimate`.
 #[derive(Debug, Clone, Args)]
 pub struct EstimateCmd {
+    /// `ball`: club data from ball data; `flight`: the launch (spin, axis, …) from the
+    /// flight observations below.
+    #[arg(long, value_enum, default_value = "ball")]
+    pub from: EstimateFrom,
     #[command(flatten)]
     pub launch: LaunchArgs,
+    #[command(flatten)]
+    pub flight: FlightObsArgs,
+    #[command(flatten)]
+    pub scene: SceneArgs,
     #[command(flatten)]
     pub measured: MeasuredArgs,
     #[command(flatten)]
@@ -62,6 +82,15 @@ impl EstimateCmd {
     /// # Errors
     /// Bad options or no estimate (status 2).
     pub fn run(&self) -> Result<String, Failure> {
+        if self.from == EstimateFrom::Flight {
+            return super::from_flight::run(
+                &self.launch,
+                &self.flight,
+                &self.scene,
+                &self.precision,
+                &self.output,
+            );
+        }
         let u = self.output.units;
         let mut p = Params::default();
         self.club.apply(&mut p, u);

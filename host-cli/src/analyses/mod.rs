@@ -4,6 +4,7 @@
 
 pub mod dispersion;
 pub mod estimate;
+pub mod from_flight;
 pub mod normalize;
 pub mod optimize;
 mod output;
