@@ -62,9 +62,13 @@ fn estimate_inverts_impact() {
         assert!(num(&e[k]).is_finite(), "{k}");
         assert!(num(&e[&format!("{k}_sd")]) >= 0.0, "{k}_sd");
     }
-    // the ball data are reproduced within their noise; face and loft within 2σ
-    assert!(num(&e["residual_launch_angle_deg"]).abs() < 0.2, "{e}");
-    assert!(num(&e["residual_spin_axis_deg"]).abs() < 1.5, "{e}");
+    // the ball data are reproduced within their noise (the driver's: the spec-sheet noise
+    // × carry_core::estimate::DRIVER_NOISE_SCALE, 3.3); face and loft within 2σ
+    assert!(
+        num(&e["residual_launch_angle_deg"]).abs() < 0.2 * 3.3,
+        "{e}"
+    );
+    assert!(num(&e["residual_spin_axis_deg"]).abs() < 1.5 * 3.3, "{e}");
     assert!(
         (num(&e["face_angle_deg"]) - 1.5).abs() < 2.0 * num(&e["face_angle_deg_sd"]),
         "{e}"
