@@ -300,8 +300,9 @@ pub struct SceneArgs {
     #[arg(long)]
     pub no_spin_decay: bool,
     /// Aerodynamic model: `tour2023` (default: the modern model calibrated on TrackMan's
-    /// 2023 tour averages), `quintavalla` (the seed model of PHYSICS.md), or a model file
-    /// written by `carry fit --output`.
+    /// 2023 tour averages), `drives2026` (the same family fitted to single TrackMan drives
+    /// with both tables, docs/aero.md), `quintavalla` (the seed model of PHYSICS.md), or a
+    /// model file written by `carry fit --output`.
     #[arg(long, value_name = "NAME|FILE.toml")]
     pub aero: Option<String>,
     /// Bounce and roll to rest on this ground: fairway, fairway-soft, rough, green, or a
@@ -556,7 +557,7 @@ pub enum BenchCmd {
         #[arg(long)]
         quick: bool,
         /// Aerodynamic model of the study's shots (the golden flights keep the seed's):
-        /// `tour2023` (default), `quintavalla` or a model file.
+        /// `tour2023` (default), `drives2026`, `quintavalla` or a model file.
         #[arg(long, value_name = "NAME|FILE.toml")]
         aero: Option<String>,
     },

@@ -4,7 +4,7 @@
 
 mod common;
 
-use carry_core::aero::{AeroModel, LinearAero, ModernAero, TOUR_2023};
+use carry_core::aero::{AeroModel, LinearAero, TOUR_2023};
 use carry_core::flight::Integrator;
 use carry_lab::fit::flight::{AeroFamily, AeroProblem, ShotRow, predict};
 use carry_lab::fit::{self, FitOptions};
@@ -225,30 +225,35 @@ fn calibrated_default_errors_on_both_tables() {
 /// 1–8 %/s.
 #[test]
 fn calibrated_default_is_physically_plausible() {
-    let m = AeroModel::<f64>::tour_2023();
-    for i in 0..=60 {
-        let s = f64::from(i) * 0.01;
-        for j in 0..=40 {
-            let re = 5.0e4 + f64::from(j) * 5.0e3;
-            let (cd, cl, _) = m.coefficients(s, re);
-            assert!(cd > 0.0 && cd < 0.6, "C_D {cd} at S {s}, Re {re}");
-            assert!((0.0..0.5).contains(&cl), "C_L {cl} at S {s}, Re {re}");
-            if i > 0 {
-                let (cd_before, cl_before, _) = m.coefficients(s - 0.01, re);
-                assert!(cl > cl_before && cd >= cd_before, "S {s}, Re {re}");
+    // tour2023 (the default) and drives2026 (issue 35), over issue 21's range.
+    for m in [
+        AeroModel::<f64>::tour_2023(),
+        AeroModel::<f64>::drives_2026(),
+    ] {
+        for i in 0..=60 {
+            let s = f64::from(i) * 0.01;
+            for j in 0..=40 {
+                let re = 5.0e4 + f64::from(j) * 5.0e3;
+                let (cd, cl, _) = m.coefficients(s, re);
+                assert!(cd > 0.0 && cd < 0.6, "C_D {cd} at S {s}, Re {re}");
+                assert!((0.0..0.5).contains(&cl), "C_L {cl} at S {s}, Re {re}");
+                if i > 0 {
+                    let (cd_before, cl_before, _) = m.coefficients(s - 0.01, re);
+                    assert!(cl > cl_before && cd >= cd_before, "S {s}, Re {re}");
+                }
             }
         }
+        let AeroModel::Modern(c) = m else {
+            panic!("both are modern")
+        };
+        // dω/dt / ω = −(½ρπR²·c_m·R·D/I_b)·V for a 70 m/s driver at 1.225 kg/m³.
+        let (r, mass) = (0.021336_f64, 0.04593);
+        let lambda = 0.5 * 1.225 * std::f64::consts::PI * r * r * c.cm_spin * r * 2.0 * r
+            / (0.4 * mass * r * r);
+        let per_second = lambda * 70.0;
+        assert!((0.01..0.08).contains(&per_second), "{per_second}");
+        assert_eq!(c.validate(), Ok(c));
     }
-    let AeroModel::Modern(c) = m else {
-        panic!("tour2023 is modern")
-    };
-    // dω/dt / ω = −(½ρπR²·c_m·R·D/I_b)·V for a 70 m/s driver at 1.225 kg/m³.
-    let (r, mass) = (0.021336_f64, 0.04593);
-    let lambda =
-        0.5 * 1.225 * std::f64::consts::PI * r * r * c.cm_spin * r * 2.0 * r / (0.4 * mass * r * r);
-    let per_second = lambda * 70.0;
-    assert!((0.01..0.08).contains(&per_second), "{per_second}");
-    assert_eq!(c.validate(), Ok(ModernAero::<f64>::tour_2023()));
 }
 
 /// The default-fidelity carry of `launch` (given in f64) flown in precision `T` with the

@@ -150,3 +150,33 @@ fn the_estimate_columns_are_the_record_s_fields_in_order() {
     );
     assert!(!r.club_speed_estimated);
 }
+
+/// A single-drive export (synthetic rows in the shared file's format) is recognised by its
+/// header: its premium indoor row is a fit row with its session; the outdoor and range-ball
+/// rows are left out and noted.
+#[test]
+fn a_single_drive_export_is_read_by_its_header() {
+    use carry_lab::fit::request::{Conditions, read_input};
+    let header = "Ball,Club Speed,Attack Angle,Club Path,Dyn. Loft,Face Angle,Face To Path,Ball Speed,Smash Factor,Launch Angle,Launch Direction,Spin Rate,Spin Axis,Max Height - Height,Last data Point - Length,Last data Point - Side,Last data Point - Height,Last data Point - Time,Carry Flat - Length,Carry Flat - Side,Carry Flat - Land. Angle,Carry Flat - Ball Speed,Carry Flat - Time,Total,Side Total,Impact Offset,Impact Height
+,[mph],[deg],[deg],[deg],[deg],[deg],[mph],[],[deg],[deg],[rpm],[deg],[ft],[yds],[yds],[yds],[s],[yds],[yds],[deg],[mph],[s],[yds],[yds],[mm],[mm]
+";
+    // Synthetic: a 145 mph, 12°, 2,500 rpm drive indoors; the same tracked outdoors; a
+    // range ball indoors.
+    let rows = "Premium,100,1,2,12,0.5,-1.5,145,1.45,12,0.4,2500,-3,90,6,0.1,1,0.1,235,-5,38,60,6.2,255,-6,,
+Premium,100,1,2,12,0.5,-1.5,145,1.45,12,0.4,2500,-3,90,150,0.1,20,3,235,-5,38,60,6.2,255,-6,,
+Limited Distance Soft,100,1,2,12,0.5,-1.5,145,1.45,12,0.4,2500,-3,90,6,0.1,1,0.1,220,-5,38,60,6.2,240,-6,,
+";
+    let path = std::env::temp_dir().join(format!("carry-drives-{}.csv", std::process::id()));
+    std::fs::write(&path, format!("{header}{rows}")).expect("temp file");
+    let read = read_input(&path, Units::Si, &Conditions::default());
+    let _ = std::fs::remove_file(&path);
+    let (rows, notes) = read.expect("a drives file");
+    assert_eq!(rows.len(), 1);
+    assert_eq!(rows[0].session, Some(0));
+    assert!((rows[0].carry_m - 235.0 * 0.9144).abs() < 1e-9);
+    assert!((rows[0].apex_m.unwrap_or(0.0) - 90.0 * 0.3048).abs() < 1e-9);
+    assert!(
+        notes[0].contains("1 outdoors") && notes[0].contains("1 other balls"),
+        "{notes:?}"
+    );
+}

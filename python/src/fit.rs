@@ -67,6 +67,7 @@ pub fn run(args: &FitArgs) -> Result<serde_json::Value, FitError> {
         humidity: args.humidity,
         pressure: args.pressure,
         altitude: args.altitude,
+        table_weight: None,
     };
     document(&request).map_err(|e| match e {
         Failure::Input(e) => FitError::Input(e.as_column()),

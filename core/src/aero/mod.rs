@@ -40,7 +40,7 @@ pub use linear::{
 };
 pub(crate) use model::PreparedAero;
 pub use model::{AeroModel, BUILT_IN_MODELS};
-pub use modern::{MODERN_COEFFICIENTS, MODERN_NAMES, ModernAero, TOUR_2023};
+pub use modern::{DRIVES_2026, MODERN_COEFFICIENTS, MODERN_NAMES, ModernAero, TOUR_2023};
 
 use crate::real::{Real, lit};
 use nalgebra::Vector3;

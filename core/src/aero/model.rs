@@ -29,9 +29,10 @@ pub enum AeroModel<T> {
     Modern(ModernAero<T>),
 }
 
-/// Names of the built-in models, default first: `tour2023` (the calibrated modern model)
-/// and `quintavalla` (the seed model).
-pub const BUILT_IN_MODELS: [&str; 2] = ["tour2023", "quintavalla"];
+/// Names of the built-in models, default first: `tour2023` (the calibrated modern model),
+/// `quintavalla` (the seed model) and `drives2026` (the modern family fitted to single
+/// drives with both tables, issue 35).
+pub const BUILT_IN_MODELS: [&str; 3] = ["tour2023", "quintavalla", "drives2026"];
 
 impl<T: Real> AeroModel<T> {
     /// The seed model: Quintavalla's linear coefficients (bit for bit the golden files').
@@ -46,12 +47,19 @@ impl<T: Real> AeroModel<T> {
         Self::Modern(ModernAero::tour_2023())
     }
 
+    /// The modern family fitted to TrackMan's single drives with both tables (issue 35).
+    #[must_use]
+    pub fn drives_2026() -> Self {
+        Self::Modern(ModernAero::drives_2026())
+    }
+
     /// A built-in model by name ([`BUILT_IN_MODELS`]), `None` for an unknown name.
     #[must_use]
     pub fn named(name: &str) -> Option<Self> {
         match name {
             "tour2023" => Some(Self::tour_2023()),
             "quintavalla" => Some(Self::quintavalla()),
+            "drives2026" => Some(Self::drives_2026()),
             _ => None,
         }
     }

@@ -81,6 +81,16 @@ pub const TOUR_2023: [f64; MODERN_COEFFICIENTS] = [
     0.17, 0.46, 5.847e4, 0.2887, 1.006, 0.6227, 0.0119, 0.08714, 0.1,
 ];
 
+/// [`ModernAero::drives_2026`] in `f64`, in the order of [`ModernAero::to_array`]: the
+/// family fitted by `carry fit` to the 3,668 premium-ball indoor single drives of
+/// `../shared/data/trackman_amateur_drives.csv` (carry, apex, landing angle, flight time)
+/// together with the tour table and the 2010 chart (each table row weighted 20), at the data
+/// README's 21.1 °C, 50 % RH, 101 325 Pa, with `S_low` free up to 0.4 (docs/aero.md,
+/// issue 35), rounded to 4 significant digits.
+pub const DRIVES_2026: [f64; MODERN_COEFFICIENTS] = [
+    0.17, 0.3, 5.377e4, 0.3157, 1.5, 0.8242, 0.0119, 0.1203, 0.2351,
+];
+
 /// Names of the modern family's coefficients, in the order of [`ModernAero::to_array`]
 /// (the keys of an aerodynamic model file).
 pub const MODERN_NAMES: [&str; MODERN_COEFFICIENTS] = [
@@ -103,6 +113,13 @@ impl<T: Real> ModernAero<T> {
     #[must_use]
     pub fn tour_2023() -> Self {
         Self::from_array(TOUR_2023.map(lit))
+    }
+
+    /// Fitted to TrackMan's single drives with both tables (issue 35): the low-spin lift
+    /// completes at S ≈ 0.24, not by 0.1 (the single drives at 1,500–3,000 rpm place it).
+    #[must_use]
+    pub fn drives_2026() -> Self {
+        Self::from_array(DRIVES_2026.map(lit))
     }
 
     /// The coefficients in order `[cd_supercritical, cd_subcritical, reynolds_critical,

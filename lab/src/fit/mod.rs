@@ -15,6 +15,7 @@ mod report;
 pub mod request;
 pub mod request_contact;
 pub mod single_drives;
+pub mod single_shots;
 mod solve;
 
 pub use bounded::{to_bounded, to_unbounded};
@@ -27,7 +28,8 @@ use rayon::prelude::*;
 /// Options of [`fit`].
 #[derive(Debug, Clone, Copy)]
 pub struct FitOptions {
-    /// Also refit once per row with that row left out.
+    /// Also refit once per row with that row left out (once per group for rows of a
+    /// group, [`Problem::group`]).
     pub leave_one_out: bool,
 }
 
@@ -63,9 +65,10 @@ pub fn evaluate<P: Problem>(problem: &P, rows: &[P::Row], p: &[f64]) -> Result<F
     Ok(report::tabulate(problem, rows, &solved, predicted, None))
 }
 
-/// Fits `problem` to `rows` and reports the residuals (and the leave-one-out errors).
-/// `progress` is called once per finished solve (1 + the number of rows with
-/// leave-one-out).
+/// Fits `problem` to `rows` and reports the residuals (and the cross-validated errors:
+/// each row predicted by a refit without it, or without its whole group, [`Problem::group`],
+/// e.g. a session of single drives). `progress` is called once per finished solve (1 + one
+/// per group and per row without a group).
 ///
 /// # Errors
 /// The errors of [`solve`]; a leave-one-out solve or prediction that fails.
@@ -82,23 +85,40 @@ pub fn fit<P: Problem>(
         .map(|r| problem.predict(&solved.parameters, r))
         .collect::<Result<_, _>>()?;
     let loo: Option<Vec<Vec<f64>>> = if options.leave_one_out && rows.len() > 1 {
-        Some(
-            (0..rows.len())
-                .into_par_iter()
-                .map(|i| {
-                    let rest: Vec<P::Row> = rows
-                        .iter()
-                        .enumerate()
-                        .filter(|&(j, _)| j != i)
-                        .map(|(_, r)| r.clone())
-                        .collect();
-                    let s = solve(problem, &rest, &solved.parameters)
-                        .map_err(|e| format!("leave-one-out without row {}: {e}", i + 1))?;
-                    progress();
-                    problem.predict(&s.parameters, &rows[i])
-                })
-                .collect::<Result<_, String>>()?,
-        )
+        // What is held out together: a row's group (a session of single shots), or the row
+        // alone.
+        let key = |i: usize| problem.group(&rows[i]).ok_or(i);
+        let mut units: Vec<Result<usize, usize>> = (0..rows.len()).map(key).collect();
+        units.sort_unstable();
+        units.dedup();
+        let held: Vec<Vec<(usize, Vec<f64>)>> = units
+            .into_par_iter()
+            .map(|unit| {
+                let rest: Vec<P::Row> = rows
+                    .iter()
+                    .enumerate()
+                    .filter(|&(j, _)| key(j) != unit)
+                    .map(|(_, r)| r.clone())
+                    .collect();
+                let what = match unit {
+                    Ok(g) => format!("group {g}"),
+                    Err(i) => format!("row {}", i + 1),
+                };
+                let s = solve(problem, &rest, &solved.parameters)
+                    .map_err(|e| format!("cross-validation without {what}: {e}"))?;
+                progress();
+                let out = (0..rows.len())
+                    .filter(|&j| key(j) == unit)
+                    .map(|j| Ok((j, problem.predict(&s.parameters, &rows[j])?)))
+                    .collect::<Result<Vec<_>, String>>()?;
+                Ok(out)
+            })
+            .collect::<Result<_, String>>()?;
+        let mut out = vec![Vec::new(); rows.len()];
+        for (j, p) in held.into_iter().flatten() {
+            out[j] = p;
+        }
+        Some(out)
     } else {
         None
     };

@@ -25,6 +25,11 @@ pub trait Problem: Sync {
     fn label(&self, _row: &Self::Row) -> String {
         String::new()
     }
+    /// The row's cross-validation group: rows of a group are held out together (a session
+    /// of single shots); `None`: the row is held out alone.
+    fn group(&self, _row: &Self::Row) -> Option<usize> {
+        None
+    }
     /// The row's weight (1 unless the input says otherwise), positive.
     fn weight(&self, _row: &Self::Row) -> f64 {
         1.0

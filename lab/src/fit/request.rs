@@ -18,10 +18,16 @@
 //! `ball_speed_mph, launch_deg, spin_rpm, max_height_yd, land_deg, carry_yd` read as they
 //! are). Without a `label` column, the text of `tour`, `who`, `club` and `source` columns
 //! labels the rows. Other columns are ignored and listed.
+//!
+//! A single-drive TrackMan export (the header `Ball,Club Speed,…,Carry Flat - Length,…` of
+//! `../shared/data/trackman_amateur_drives.csv`, a units line under it) is recognised by its
+//! header and read by [`read_drives`]: its premium indoor rows, each with its session of
+//! 1,000 rows, which the cross-validation holds out together.
 
 use crate::fit::flight::{AeroFamily, AeroProblem, ShotRow};
-use crate::fit::{self, Fit, FitOptions};
+use crate::fit::{self, Fit, FitOptions, single_shots};
 use carry_core::Launch;
+use carry_core::flight::Integrator;
 use carry_core::units::{M_PER_FOOT, M_PER_YARD, MPS_PER_MPH, deg, rpm};
 use carry_io::error::{Failure, InputError};
 use carry_io::params::SceneParams;
@@ -69,6 +75,9 @@ pub struct FitRequest {
     pub pressure: Option<f64>,
     /// Altitude of rows without conditions (m | ft) (weather).
     pub altitude: Option<f64>,
+    /// Weight of every row that is not a single drive (the tables), when single drives are
+    /// in the fit (default 1; docs/aero.md, issue 35, uses 20).
+    pub table_weight: Option<f64>,
 }
 
 /// The air-condition options of a row or of the command line (the scene options' air
@@ -331,12 +340,93 @@ pub fn read_rows(
             flight_time_s: get(Field::FlightTime),
             side_m: get(Field::Side),
             weight,
+            wind_mps: [0.0; 3],
+            session: None,
         });
     }
     if rows.is_empty() {
         return Err(InputError::new("input", format!("{name}: no rows")));
     }
     Ok((rows, ignored))
+}
+
+/// Integrator tolerance of a fit with single drives in it: Dormand–Prince at 1e-9 (carry
+/// within 1e-8 relative of the tables' 1e-11, 2.5× faster).
+pub const DRIVES_TOLERANCE: f64 = 1e-9;
+
+/// Whether `input` is a single-drive TrackMan export (`Ball,Club Speed,…` with
+/// `Carry Flat - Length`, the format of `../shared/data/trackman_amateur_drives.csv`).
+fn is_drives_file(input: &PathBuf) -> bool {
+    if input.as_os_str() == "-" {
+        return false;
+    }
+    std::fs::read_to_string(input).is_ok_and(|t| {
+        t.lines()
+            .next()
+            .is_some_and(|h| h.starts_with("Ball,") && h.contains("Carry Flat - Length"))
+    })
+}
+
+/// The rows of a fit input: a single-drive export ([`read_drives`]) or a table
+/// ([`read_rows`]).
+///
+/// # Errors
+/// As [`read_rows`] or [`read_drives`].
+pub fn read_input(
+    input: &PathBuf,
+    units: Units,
+    global: &Conditions,
+) -> Result<(Vec<ShotRow>, Vec<String>), InputError> {
+    if is_drives_file(input) {
+        read_drives(input, global)
+    } else {
+        read_rows(input, units, global)
+    }
+}
+
+/// The single drives of a TrackMan export as fit rows (issue 35; [`single_shots`]): the
+/// premium-ball rows hit indoors with a complete, plausible launch, in the command's air,
+/// each with its session (held out together in the cross-validation), less the rows whose
+/// carry the default model misses by more than [`single_shots::SCREEN_PCT`]. What was left
+/// out is listed with the ignored columns.
+///
+/// # Errors
+/// The file cannot be read or parsed; the conditions are invalid.
+pub fn read_drives(
+    input: &std::path::Path,
+    global: &Conditions,
+) -> Result<(Vec<ShotRow>, Vec<String>), InputError> {
+    let name = input.display().to_string();
+    let drives = crate::drives::read(input).map_err(|e| InputError::new("input", e))?;
+    let air = carry_io::scene::air(global)
+        .map_err(|e| InputError::new("input", format!("{name}: {}: {}", e.key, e.reason)))?;
+    let all = single_shots::drive_rows(&drives, air);
+    let premium = single_shots::premium_indoors(&all);
+    let reference: Vec<ShotRow> = premium.iter().map(|r| r.row.clone()).collect();
+    let predicted = single_shots::carries(
+        &carry_core::aero::AeroModel::default(),
+        &reference,
+        &Integrator::dormand_prince(DRIVES_TOLERANCE),
+    );
+    let kept = single_shots::screened(&premium, &predicted);
+    let note = format!(
+        "{name}: {} of {} drives (premium ball, indoors, complete launch; left out: {} \
+         incomplete or below 1°, {} outdoors, {} other balls, {} off by > {} % with the \
+         default model)",
+        kept.len(),
+        drives.len(),
+        drives.len() - all.len(),
+        all.iter().filter(|r| r.outdoors).count(),
+        all.iter()
+            .filter(|r| !r.outdoors && r.ball != crate::drives::BallKind::Premium)
+            .count(),
+        premium.len() - kept.len(),
+        single_shots::SCREEN_PCT
+    );
+    if kept.is_empty() {
+        return Err(InputError::new("input", format!("{name}: no rows")));
+    }
+    Ok((kept.into_iter().map(|r| r.row).collect(), vec![note]))
 }
 
 /// The JSON document of a fit (SI).
@@ -468,9 +558,9 @@ fn produce(cmd: &FitRequest, value: bool) -> Result<Produced, Failure> {
     })?;
     let global = cmd.conditions();
     carry_io::scene::air::<f64>(&global)?;
-    let (mut rows, mut ignored) = read_rows(&cmd.input, cmd.units, &global)?;
+    let (mut rows, mut ignored) = read_input(&cmd.input, cmd.units, &global)?;
     for more in &cmd.also {
-        let (r, i) = read_rows(more, cmd.units, &global)?;
+        let (r, i) = read_input(more, cmd.units, &global)?;
         rows.extend(r);
         ignored.extend(
             i.into_iter()
@@ -478,11 +568,36 @@ fn produce(cmd: &FitRequest, value: bool) -> Result<Produced, Failure> {
                 .collect::<Vec<_>>(),
         );
     }
-    let problem = AeroProblem::new(family);
+    let mut problem = AeroProblem::new(family);
+    let sessions = {
+        let mut s: Vec<usize> = rows.iter().filter_map(|r| r.session).collect();
+        s.sort_unstable();
+        s.dedup();
+        s.len()
+    };
+    if sessions > 0 {
+        problem.integrator = Integrator::dormand_prince(DRIVES_TOLERANCE);
+        if family == AeroFamily::Modern {
+            problem.bounds[8] = crate::fit::flight::LOW_SATURATION_BOUNDS_DRIVES;
+        }
+        if let Some(w) = cmd.table_weight {
+            if !(w > 0.0 && w.is_finite()) {
+                return Err(InputError::new("table_weight", "must be positive").into());
+            }
+            for r in rows.iter_mut().filter(|r| r.session.is_none()) {
+                r.weight *= w;
+            }
+        }
+    }
     let options = FitOptions {
         leave_one_out: !cmd.no_cross_validation,
     };
-    let solves = 1 + if options.leave_one_out { rows.len() } else { 0 };
+    let single = rows.iter().filter(|r| r.session.is_none()).count();
+    let solves = 1 + if options.leave_one_out {
+        single + sessions
+    } else {
+        0
+    };
     let bar = (!cmd.no_progress && std::io::stderr().is_terminal()).then(|| {
         let bar = indicatif::ProgressBar::new(solves as u64);
         bar.set_style(
@@ -591,8 +706,16 @@ fn table(family: AeroFamily, f: &Fit, ignored: &[String], cmd: &FitRequest) -> S
         status(f, cmd.evaluate.is_some()),
         f.row_evaluations
     );
-    if !ignored.is_empty() {
-        let _ = writeln!(s, "  ignored columns: {}", ignored.join(", "));
+    {
+        let (notes, columns): (Vec<&String>, Vec<&String>) =
+            ignored.iter().partition(|c| c.contains(' '));
+        if !columns.is_empty() {
+            let columns: Vec<&str> = columns.iter().map(|c| c.as_str()).collect();
+            let _ = writeln!(s, "  ignored columns: {}", columns.join(", "));
+        }
+        for n in notes {
+            let _ = writeln!(s, "  {n}");
+        }
     }
     let _ = writeln!(s, "\nCOEFFICIENTS");
     for p in &f.parameters {

@@ -65,6 +65,8 @@ pub fn tour_2023() -> Option<Vec<ShotRow>> {
                 flight_time_s: None,
                 side_m: None,
                 weight: 1.0,
+                wind_mps: [0.0; 3],
+                session: None,
             })
         })
         .collect()
@@ -87,6 +89,8 @@ pub fn optimizer_2010() -> Option<Vec<ShotRow>> {
                 flight_time_s: None,
                 side_m: None,
                 weight: 1.0,
+                wind_mps: [0.0; 3],
+                session: None,
             })
             .collect(),
     )
