@@ -1,5 +1,6 @@
 //! Profiling aid: the default shot with and without a ground, many times:
-//! `ground_cost {n|g|green|rough} N` (no ground, firm fairway, green, rough).
+//! `ground_cost {n|g|trackman|green|rough} N` (no ground, firm fairway, the launch
+//! monitor's fairway, green, rough).
 use carry_core::ground::{Ground, Surface};
 use carry_core::real::lit;
 use carry_core::shot::{Fidelity, play};
@@ -8,6 +9,7 @@ use std::hint::black_box;
 fn main() {
     let surface = match std::env::args().nth(1).as_deref() {
         Some("g") => Some(Surface::FairwayFirm),
+        Some("trackman") => Some(Surface::FairwayTrackman),
         Some("green") => Some(Surface::green()),
         Some("rough") => Some(Surface::Rough),
         _ => None,

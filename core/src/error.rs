@@ -127,6 +127,10 @@ pub enum Field {
     RollingResistance,
     /// Crater scale of the surface.
     CraterScale,
+    /// Normal speed below which the surface's crater fades (m/s).
+    CraterFade,
+    /// Growth of the surface's rolling resistance with speed, the grass drag (s²/m²).
+    GrassDrag,
     /// Green speed, stimpmeter reading (m).
     Stimp,
     /// Ground plane normal (slope).
@@ -306,6 +310,8 @@ impl Field {
             Self::GroundFriction => "ground friction",
             Self::RollingResistance => "rolling resistance",
             Self::CraterScale => "crater scale",
+            Self::CraterFade => "crater fade speed",
+            Self::GrassDrag => "grass drag",
             Self::Stimp => "stimp",
             Self::GroundNormal => "ground slope",
             Self::Step => "step size",

@@ -131,6 +131,10 @@
 // `rolling_resistance`, `crater_scale`).
 #define CARRY_GROUND_CUSTOM 5
 
+// `CarryScene::ground`: the launch monitor's fairway (fitted to TrackMan's roll on single
+// drives).
+#define CARRY_GROUND_FAIRWAY_TRACKMAN 6
+
 // `CarrySettings::solver`: the exact 3×3 collision-matrix form (default; fast).
 #define CARRY_SOLVER_REDUCED 0
 

@@ -43,6 +43,9 @@ pub const CARRY_GROUND_GREEN: u32 = 4;
 /// `CarryScene::ground`: custom turf (`ground_restitution`, `ground_friction`,
 /// `rolling_resistance`, `crater_scale`).
 pub const CARRY_GROUND_CUSTOM: u32 = 5;
+/// `CarryScene::ground`: the launch monitor's fairway (fitted to TrackMan's roll on single
+/// drives).
+pub const CARRY_GROUND_FAIRWAY_TRACKMAN: u32 = 6;
 
 /// Everything about a flight that is not the ball or its launch (SI units; the humidity
 /// is a fraction 0..1, not the CLI's %). Start from `carry_scene_default_*`.
@@ -112,6 +115,8 @@ impl<T: Real> Default for CarryScene<T> {
             friction: T::zero(),
             rolling_resistance: T::zero(),
             crater_scale: T::zero(),
+            crater_fade_mps: T::one(),
+            grass_drag_s2pm2: T::zero(),
         });
         let stimp = match Surface::<T>::green() {
             Surface::Green { stimp_m } => stimp_m,
@@ -204,15 +209,19 @@ impl<T: Real> CarryScene<T> {
             CARRY_GROUND_NONE => return Ok(None),
             CARRY_GROUND_FAIRWAY => Surface::FairwayFirm,
             CARRY_GROUND_FAIRWAY_SOFT => Surface::FairwaySoft,
+            CARRY_GROUND_FAIRWAY_TRACKMAN => Surface::FairwayTrackman,
             CARRY_GROUND_ROUGH => Surface::Rough,
             CARRY_GROUND_GREEN => Surface::Green {
                 stimp_m: self.stimp_m,
             },
+            // The crater fade and the grass drag are the firm fairway's (not in the C
+            // struct).
             CARRY_GROUND_CUSTOM => Surface::Custom(Turf {
                 restitution: self.ground_restitution,
                 friction: self.ground_friction,
                 rolling_resistance: self.rolling_resistance,
                 crater_scale: self.crater_scale,
+                ..Surface::<T>::FairwayFirm.turf()?
             }),
             _ => return Err(CARRY_ERR_UNKNOWN_OPTION),
         };

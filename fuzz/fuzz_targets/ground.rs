@@ -33,9 +33,10 @@ fn wild(b: &mut Bytes<'_>, lo: f64, hi: f64) -> f64 {
 }
 
 fn surface<T: Real>(b: &mut Bytes<'_>) -> Surface<T> {
-    match b.byte() % 5 {
+    match b.byte() % 6 {
         0 => Surface::FairwayFirm,
         1 => Surface::FairwaySoft,
+        5 => Surface::FairwayTrackman,
         2 => Surface::Rough,
         3 => Surface::Green {
             stimp_m: lit(wild(b, 0.3, 9.0)),
@@ -45,6 +46,8 @@ fn surface<T: Real>(b: &mut Bytes<'_>) -> Surface<T> {
             friction: lit(wild(b, 0.0, 2.0)),
             rolling_resistance: lit(wild(b, 0.0, 1.0)),
             crater_scale: lit(wild(b, 0.0, 3.0)),
+            crater_fade_mps: lit(wild(b, 0.0, 120.0)),
+            grass_drag_s2pm2: lit(wild(b, 0.0, 1.0)),
         }),
     }
 }

@@ -112,6 +112,8 @@ pub fn field_key(field: Field) -> &'static str {
         Field::GroundFriction => "ground_friction",
         Field::RollingResistance => "rolling_resistance",
         Field::CraterScale => "crater_scale",
+        Field::CraterFade => "crater_fade",
+        Field::GrassDrag => "grass_drag",
         Field::Stimp => "stimp",
         Field::GroundNormal => "ground_slope",
         Field::ContactLaw => "contact, solver",
@@ -194,7 +196,10 @@ impl From<Error> for InputError {
                         "{reason} (at most {:.0} rpm at launch)",
                         carry_core::flight::MAX_SPIN_RADPS * 60.0 / core::f64::consts::TAU
                     ),
-                    Field::GroundFriction | Field::RollingResistance | Field::CraterScale => {
+                    Field::GroundFriction
+                    | Field::RollingResistance
+                    | Field::CraterScale
+                    | Field::GrassDrag => {
                         format!("{reason} (0 to {MAX_TURF_COEFFICIENT})")
                     }
                     Field::ContactLaw => {

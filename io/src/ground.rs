@@ -23,6 +23,8 @@ use std::path::Path;
 pub enum GroundPreset {
     /// Firm fairway.
     Fairway,
+    /// The launch monitor's fairway (fitted to TrackMan's single drives).
+    FairwayTrackman,
     /// Soft fairway.
     FairwaySoft,
     /// Rough.
@@ -32,7 +34,8 @@ pub enum GroundPreset {
 }
 
 /// The surface names, for messages.
-pub const GROUND_NAMES: &str = "fairway, fairway-soft, rough, green, or a FILE.toml";
+pub const GROUND_NAMES: &str =
+    "fairway, fairway-trackman, fairway-soft, rough, green, or a FILE.toml";
 
 impl GroundPreset {
     /// Looks a surface up by name.
@@ -40,6 +43,7 @@ impl GroundPreset {
     pub fn find(name: &str) -> Option<Self> {
         match name.trim().to_ascii_lowercase().replace('_', "-").as_str() {
             "fairway" | "fairway-firm" => Some(Self::Fairway),
+            "fairway-trackman" | "trackman" => Some(Self::FairwayTrackman),
             "fairway-soft" => Some(Self::FairwaySoft),
             "rough" => Some(Self::Rough),
             "green" => Some(Self::Green),
@@ -191,6 +195,7 @@ pub fn build<T: Real>(spec: &GroundSpec) -> Result<Option<Ground<T>>, InputError
             return Err(InputError::new("stimp", "applies to --ground green only"));
         }
         (GroundPreset::Fairway, None) => Surface::FairwayFirm,
+        (GroundPreset::FairwayTrackman, None) => Surface::FairwayTrackman,
         (GroundPreset::FairwaySoft, None) => Surface::FairwaySoft,
         (GroundPreset::Rough, None) => Surface::Rough,
     };
@@ -208,6 +213,7 @@ pub fn build<T: Real>(spec: &GroundSpec) -> Result<Option<Ground<T>>, InputError
             friction: pick(spec.friction, base.friction),
             rolling_resistance: pick(spec.rolling_resistance, base.rolling_resistance),
             crater_scale: pick(spec.crater_scale, base.crater_scale),
+            ..base
         })
     } else {
         surface

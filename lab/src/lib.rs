@@ -30,6 +30,7 @@ pub mod dispersion;
 pub mod drives;
 pub mod error;
 pub mod fit;
+pub mod ground_drives;
 pub mod ground_fit;
 pub mod launch_fit;
 pub mod normalize;

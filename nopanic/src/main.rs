@@ -259,6 +259,7 @@ fn ground<T: Real>() -> Option<Ground<T>> {
     let surface = match black_box(0_u8) {
         0 => Surface::FairwayFirm,
         1 => Surface::FairwaySoft,
+        4 => Surface::FairwayTrackman,
         2 => Surface::Rough,
         3 => Surface::Green { stimp_m: x(3.0) },
         _ => Surface::Custom(Turf {
@@ -266,6 +267,8 @@ fn ground<T: Real>() -> Option<Ground<T>> {
             friction: x(0.4),
             rolling_resistance: x(0.1),
             crater_scale: x(1.0),
+            crater_fade_mps: x(6.0),
+            grass_drag_s2pm2: x(0.07),
         }),
     };
     match black_box(1_u8) {

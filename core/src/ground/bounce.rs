@@ -5,7 +5,7 @@
 //! impact speed `v`, angle from the normal `φ`):
 //!
 //! ```text
-//! crater tilt        θ_c = κ · 15.4° · (v / 18.6 m/s) · (φ / 44.4°) · min(1, v_n / 6 m/s),
+//! crater tilt        θ_c = κ · 15.4° · (v / 18.6 m/s) · (φ / 44.4°) · min(1, v_n / v_f),
 //!                    clamped to [0, φ]
 //! tilted components  u = v_t cos θ_c − v_n sin θ_c,   v_n' = v_t sin θ_c + v_n cos θ_c
 //! restitution        e = (e₀/0.510) · (0.510 − 0.0375 v_n' + 0.000903 v_n'²)  (v_n' ≤ 20 m/s)
@@ -22,8 +22,9 @@
 //! of 6 m/s or more (a driver's, a wedge's). Extrapolated to the grazing impacts of a ball
 //! already running out it would predict a crater for a rolling ball, which then skips
 //! along in hops for tens of metres; a grazing ball barely dents the turf, so the tilt
-//! fades with the normal speed below [`CRATER_FADE_NORMAL_SPEED_MPS`] (calibrated on
-//! shallow landings, docs/ground.md).
+//! fades with the normal speed below the turf's `v_f` ([`Turf::crater_fade_mps`];
+//! [`CRATER_FADE_NORMAL_SPEED_MPS`] for the seed's surfaces; calibrated on shallow
+//! landings, docs/ground.md).
 //!
 //! Penner's turf-crater law and e(v_n) were fitted to Haake's measurements on greens; the
 //! roll/slide split is Daish's rigid-sphere impact with Coulomb friction, here with the
@@ -142,7 +143,7 @@ pub(crate) fn rebound<T: Real, N: Normal<T>>(
     let per_speed_angle =
         lit::<T>(CRATER_REFERENCE_RAD / (CRATER_REFERENCE_SPEED_MPS * CRATER_REFERENCE_ANGLE_RAD));
     // Faded out below the reference normal speed (see the module docs).
-    let fade = smaller(vn * lit::<T>(1.0 / CRATER_FADE_NORMAL_SPEED_MPS), T::one());
+    let fade = smaller(vn / turf.crater_fade_mps, T::one());
     let tilt = turf.crater_scale * per_speed_angle * speed * fade * phi;
     let tilt = larger(smaller(tilt, phi), T::zero());
     let (s, c) = crate::geometry::sin_cos_small(tilt);

@@ -302,7 +302,7 @@ fn run_out_on<T: Real, H: Hopper<T>, N: Normal<T>>(
         normal: n,
         gravity: g_vec,
         resistance: ground.turf.rolling_resistance,
-        grass_drag: lit(surface::GRASS_DRAG_S2PM2),
+        grass_drag: ground.turf.grass_drag_s2pm2,
         friction: ground.turf.friction,
         radius: ground.radius,
         start_time: at.time,
@@ -410,6 +410,8 @@ mod tests {
                 friction,
                 rolling_resistance: 0.1,
                 crater_scale: 1.0,
+                crater_fade_mps: 6.0,
+                grass_drag_s2pm2: 0.07,
             }))
             .prepare(0.021_f64)
         };
@@ -430,5 +432,80 @@ mod tests {
         assert_eq!(steep, err(Field::GroundNormal, Reason::OutOfRange));
         let slow = Ground::level(Surface::Green { stimp_m: 0.0 }).prepare(0.021_f64);
         assert_eq!(slow, err(Field::Stimp, Reason::NotPositive));
+    }
+
+    /// Issue 35's turf coefficients: the crater fade and the grass drag are validated and
+    /// named, in both precisions; every preset is valid; the seed's surfaces keep the
+    /// seed's fade (6 m/s) and Penner's grass drag.
+    fn crater_fade_and_grass_drag<T: Real>() {
+        let with = |fade: f64, drag: f64| {
+            Ground::level(Surface::Custom(Turf {
+                crater_fade_mps: lit::<T>(fade),
+                grass_drag_s2pm2: lit::<T>(drag),
+                ..Surface::<T>::FairwayFirm.turf().unwrap()
+            }))
+            .prepare(lit(0.021))
+            .map(|_| ())
+        };
+        let err = |f, r| Err(Error::invalid(f, r));
+        assert_eq!(with(0.0, 0.07), err(Field::CraterFade, Reason::NotPositive));
+        assert_eq!(
+            with(-1.0, 0.07),
+            err(Field::CraterFade, Reason::NotPositive)
+        );
+        assert_eq!(
+            with(101.0, 0.07),
+            err(Field::CraterFade, Reason::OutOfRange)
+        );
+        assert_eq!(with(6.0, -0.1), err(Field::GrassDrag, Reason::Negative));
+        assert_eq!(with(6.0, 11.0), err(Field::GrassDrag, Reason::OutOfRange));
+        assert_eq!(
+            with(6.0, f64::NAN),
+            err(Field::GrassDrag, Reason::NotFinite)
+        );
+        assert_eq!(with(0.5, 0.0), Ok(()));
+        for s in [
+            Surface::<T>::FairwayFirm,
+            Surface::FairwaySoft,
+            Surface::Rough,
+            Surface::green(),
+        ] {
+            let t = s.turf().unwrap();
+            assert_eq!(t.crater_fade_mps, lit(bounce::CRATER_FADE_NORMAL_SPEED_MPS));
+            assert_eq!(t.grass_drag_s2pm2, lit(surface::GRASS_DRAG_S2PM2));
+        }
+        let t = Surface::<T>::FairwayTrackman.turf().unwrap();
+        assert_eq!(t, t.validated().unwrap());
+        assert_eq!(t.crater_fade_mps, lit(surface::TRACKMAN_FAIRWAY[4]));
+    }
+
+    #[test]
+    fn crater_fade_and_grass_drag_f64() {
+        crater_fade_and_grass_drag::<f64>();
+    }
+
+    #[test]
+    fn crater_fade_and_grass_drag_f32() {
+        crater_fade_and_grass_drag::<f32>();
+    }
+
+    /// The crater fade is the turf's: a slower fade (a larger v_f) takes the crater from a
+    /// shallow landing, which then runs on further; a steep landing is past both fades and
+    /// runs out the same.
+    #[test]
+    fn the_crater_fade_is_the_turfs() {
+        let bounce_with = |fade: f64, angle_deg: f64| {
+            let turf = Turf {
+                crater_fade_mps: fade,
+                ..Surface::<f64>::FairwayFirm.turf().unwrap()
+            };
+            let (s, c) = angle_deg.to_radians().sin_cos();
+            let v = Vector3::new(30.0 * c, -30.0 * s, 0.0);
+            let w = Vector3::new(0.0, 0.0, 250.0);
+            bounce::rebound(&v, &w, Vector3::y(), &turf, 0.021)
+        };
+        let (sharp, slow) = (bounce_with(2.0, 8.0), bounce_with(12.0, 8.0));
+        assert!(slow.velocity_mps.x > sharp.velocity_mps.x + 1.0);
+        assert_eq!(bounce_with(2.0, 40.0), bounce_with(6.0, 40.0));
     }
 }

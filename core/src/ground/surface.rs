@@ -9,12 +9,17 @@
 //!      the grass drag growing with speed (c = GRASS_DRAG_S2PM2; Penner 2002: ρ₀ = 0.131
 //!      on a green)
 //! κ    crater scale: the turf's crater tilts the impact by κ·θ_c (Penner 2002: κ = 1)
+//! v_f  crater fade: below this normal speed the crater fades linearly (a grazing ball
+//!      barely dents the turf; `bounce`)
+//! c    grass drag: the growth of the rolling resistance with speed, ρ(v) = ρ₀(1 + c v²)
+//!      (Penner's putting form: c = GRASS_DRAG_S2PM2)
 //! ```
 //!
 //! On a green ρ comes from the stimpmeter: the stimpmeter releases the ball at
 //! `v₀ = 1.83 m/s` (Holmes 1986; Penner 2002, "The physics of putting") and it rolls the
 //! stimp reading S, so `S = ln(1 + c v₀²)/(2·(5/7)ρ₀g·c)`.
 
+use super::bounce::CRATER_FADE_NORMAL_SPEED_MPS;
 use crate::error::{Error, Field, Reason, Result};
 use crate::real::{Real, lit};
 use crate::validate::{in_range, positive};
@@ -35,6 +40,11 @@ pub const PENNER_FRICTION: f64 = 0.40;
 /// driver chart (roll = total − carry on "a typical fairway"; `carry_lab::ground_fit`,
 /// docs/ground.md): it rolls like a stimp-11 green at putting speeds.
 pub const FAIRWAY_ROLLING_RESISTANCE: f64 = 0.063;
+/// The launch-monitor fairway (issue 35): the turf fitted to TrackMan's roll after its own
+/// landings on 3,867 single drives (`carry_lab::ground_drives`, docs/ground.md, "Issue
+/// 35"): restitution e₀, friction μ, rolling resistance ρ₀, crater scale κ, crater fade
+/// v_f (m/s), grass drag c (s²/m²).
+pub const TRACKMAN_FAIRWAY: [f64; 6] = [0.20, 0.376, 0.0796, 0.609, 2.13, 0.657];
 /// Largest accepted friction coefficient, rolling resistance and crater scale.
 pub const MAX_TURF_COEFFICIENT: f64 = 10.0;
 
@@ -45,6 +55,11 @@ pub enum Surface<T: Real> {
     /// A firm, fast fairway (Penner's green bounce; rolling resistance [`FAIRWAY_ROLLING_RESISTANCE`],
     /// calibrated to TrackMan's 2010 driver chart).
     FairwayFirm,
+    /// The fairway of a launch monitor (issue 35): the turf fitted to TrackMan's roll on
+    /// single drives, all landing angles ([`TRACKMAN_FAIRWAY`]): a softer bounce and a
+    /// shallower crater than Penner's green, a crater that fades below 2.1 m/s of normal
+    /// speed, and a grass drag nine times the putting form's.
+    FairwayTrackman,
     /// A soft, watered fairway (stimp-5 roll, 80 % of the restitution, deeper crater).
     FairwaySoft,
     /// Rough: high resistance, little bounce, a deep crater.
@@ -72,7 +87,16 @@ pub struct Turf<T> {
     pub rolling_resistance: T,
     /// Crater scale κ (multiplies Penner's crater angle), ≥ 0.
     pub crater_scale: T,
+    /// Crater fade v_f (m/s): below this normal speed the crater tilt fades linearly,
+    /// `θ_c · min(1, v_n/v_f)`; in (0, [`MAX_CRATER_FADE_MPS`]].
+    pub crater_fade_mps: T,
+    /// Grass drag `c` in `ρ(v) = ρ₀(1 + c v²)` (s²/m²), ≥ 0 ([`GRASS_DRAG_S2PM2`] is
+    /// Penner's putting form).
+    pub grass_drag_s2pm2: T,
 }
+
+/// Largest accepted crater fade speed (m/s): a landing's normal speed is below 60 m/s.
+pub const MAX_CRATER_FADE_MPS: f64 = 100.0;
 
 /// Growth of the rolling resistance with speed, `c` in `ρ(v) = ρ₀(1 + c v²)` (s²/m²):
 /// the grass drag. Penner's putting form as quoted in patents citing it,
@@ -102,8 +126,10 @@ impl<T: Real> Surface<T> {
     ///
     /// # Errors
     /// [`Field::Stimp`] outside 1–30 ft; for a custom turf [`Field::GroundRestitution`]
-    /// outside [0, 1], [`Field::GroundFriction`], [`Field::RollingResistance`] or
-    /// [`Field::CraterScale`] negative, not finite or above [`MAX_TURF_COEFFICIENT`].
+    /// outside [0, 1], [`Field::GroundFriction`], [`Field::RollingResistance`],
+    /// [`Field::CraterScale`] or [`Field::GrassDrag`] negative, not finite or above
+    /// [`MAX_TURF_COEFFICIENT`]; [`Field::CraterFade`] not positive or above
+    /// [`MAX_CRATER_FADE_MPS`].
     pub fn turf(&self) -> Result<Turf<T>> {
         let stimp = |feet: f64| resistance_from_stimp::<T>(lit(feet * FOOT_M));
         let penner = |e_ratio: f64, rho: T, kappa: f64| Turf {
@@ -111,15 +137,30 @@ impl<T: Real> Surface<T> {
             friction: lit(PENNER_FRICTION),
             rolling_resistance: rho,
             crater_scale: lit(kappa),
+            crater_fade_mps: lit(CRATER_FADE_NORMAL_SPEED_MPS),
+            grass_drag_s2pm2: lit(GRASS_DRAG_S2PM2),
         };
         match *self {
             Self::FairwayFirm => Ok(penner(1.0, lit(FAIRWAY_ROLLING_RESISTANCE), 1.0)),
+            Self::FairwayTrackman => {
+                let [e0, mu, rho, kappa, fade, drag] = TRACKMAN_FAIRWAY;
+                Ok(Turf {
+                    restitution: lit(e0),
+                    friction: lit(mu),
+                    rolling_resistance: lit(rho),
+                    crater_scale: lit(kappa),
+                    crater_fade_mps: lit(fade),
+                    grass_drag_s2pm2: lit(drag),
+                })
+            }
             Self::FairwaySoft => Ok(penner(0.8, stimp(5.0), 1.2)),
             Self::Rough => Ok(Turf {
                 restitution: lit(0.30),
                 friction: lit(0.60),
                 rolling_resistance: lit(0.30),
                 crater_scale: lit(1.3),
+                crater_fade_mps: lit(CRATER_FADE_NORMAL_SPEED_MPS),
+                grass_drag_s2pm2: lit(GRASS_DRAG_S2PM2),
             }),
             Self::Green { stimp_m } => {
                 let s = positive(stimp_m, Field::Stimp)?;
@@ -154,6 +195,13 @@ impl<T: Real> Turf<T> {
             friction: coefficient(self.friction, Field::GroundFriction)?,
             rolling_resistance: coefficient(self.rolling_resistance, Field::RollingResistance)?,
             crater_scale: coefficient(self.crater_scale, Field::CraterScale)?,
+            crater_fade_mps: in_range(
+                positive(self.crater_fade_mps, Field::CraterFade)?,
+                T::zero(),
+                lit(MAX_CRATER_FADE_MPS),
+                Field::CraterFade,
+            )?,
+            grass_drag_s2pm2: coefficient(self.grass_drag_s2pm2, Field::GrassDrag)?,
         })
     }
 }
