@@ -229,7 +229,7 @@ pub enum Error {
     /// its bound, or a measured datum is missed by more than the stated number of σ.
     Inconsistent {
         /// The datum the most probable delivery misses by the most σ.
-        worst: crate::estimate::Datum,
+        worst: Datum,
     },
     /// The launch fit ([`crate::launch_fit`]) has fewer flight observations than free
     /// unknowns.
@@ -237,6 +237,71 @@ pub enum Error {
     /// The launch fit's observations do not pin this unknown down (its posterior spread
     /// stays near its prior's).
     Unidentifiable(Field),
+}
+
+/// One term of the club-data estimator's cost ([`crate::estimate`]): a measured number, or
+/// the club's prior. Here, a leaf, so that [`Error::Inconsistent`] can name it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub enum Datum {
+    /// The measured ball speed.
+    BallSpeed,
+    /// The measured launch angle.
+    LaunchAngle,
+    /// The measured launch direction.
+    LaunchDirection,
+    /// The measured spin rate.
+    Spin,
+    /// The measured spin axis.
+    SpinAxis,
+    /// The measured club speed.
+    ClubSpeed,
+    /// The measured attack angle.
+    AttackAngle,
+    /// The measured club path.
+    ClubPath,
+    /// The measured face angle.
+    FaceAngle,
+    /// The measured dynamic loft.
+    DynamicLoft,
+    /// The club: the delivery the data need is far from the club's prior (its typical
+    /// delivery), e.g. ball data no swing of this club gives.
+    Club,
+}
+
+impl Datum {
+    /// The ball data in the order of [`crate::estimate::BallData::to_array`].
+    pub const BALL: [Self; 5] = [
+        Self::BallSpeed,
+        Self::LaunchAngle,
+        Self::LaunchDirection,
+        Self::Spin,
+        Self::SpinAxis,
+    ];
+
+    /// A short human name.
+    #[must_use]
+    pub const fn name(self) -> &'static str {
+        match self {
+            Self::BallSpeed => "ball speed",
+            Self::LaunchAngle => "launch angle",
+            Self::LaunchDirection => "launch direction",
+            Self::Spin => "spin",
+            Self::SpinAxis => "spin axis",
+            Self::ClubSpeed => "club speed",
+            Self::AttackAngle => "attack angle",
+            Self::ClubPath => "club path",
+            Self::FaceAngle => "face angle",
+            Self::DynamicLoft => "dynamic loft",
+            Self::Club => "club",
+        }
+    }
+}
+
+impl core::fmt::Display for Datum {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.write_str(self.name())
+    }
 }
 
 /// Result alias of the core.

@@ -320,69 +320,7 @@ impl<T: Real> Check<T> {
     }
 }
 
-/// One term of the estimator's cost: a measured number, or the club's prior.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-#[cfg_attr(feature = "defmt", derive(defmt::Format))]
-pub enum Datum {
-    /// The measured ball speed.
-    BallSpeed,
-    /// The measured launch angle.
-    LaunchAngle,
-    /// The measured launch direction.
-    LaunchDirection,
-    /// The measured spin rate.
-    Spin,
-    /// The measured spin axis.
-    SpinAxis,
-    /// The measured club speed.
-    ClubSpeed,
-    /// The measured attack angle.
-    AttackAngle,
-    /// The measured club path.
-    ClubPath,
-    /// The measured face angle.
-    FaceAngle,
-    /// The measured dynamic loft.
-    DynamicLoft,
-    /// The club: the delivery the data need is far from the club's prior (its typical
-    /// delivery), e.g. ball data no swing of this club gives.
-    Club,
-}
-
-impl Datum {
-    /// The ball data in the order of [`BallData::to_array`].
-    pub const BALL: [Self; 5] = [
-        Self::BallSpeed,
-        Self::LaunchAngle,
-        Self::LaunchDirection,
-        Self::Spin,
-        Self::SpinAxis,
-    ];
-
-    /// A short human name.
-    #[must_use]
-    pub const fn name(self) -> &'static str {
-        match self {
-            Self::BallSpeed => "ball speed",
-            Self::LaunchAngle => "launch angle",
-            Self::LaunchDirection => "launch direction",
-            Self::Spin => "spin",
-            Self::SpinAxis => "spin axis",
-            Self::ClubSpeed => "club speed",
-            Self::AttackAngle => "attack angle",
-            Self::ClubPath => "club path",
-            Self::FaceAngle => "face angle",
-            Self::DynamicLoft => "dynamic loft",
-            Self::Club => "club",
-        }
-    }
-}
-
-impl core::fmt::Display for Datum {
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        f.write_str(self.name())
-    }
-}
+pub use crate::error::Datum;
 
 /// The verdict of the consistency check: do the data agree with each other and with the
 /// club? Computed for every estimate at the most probable delivery `x̂` (no forward
