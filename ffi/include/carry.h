@@ -26,6 +26,21 @@
 // (about half the instructions; the 1σ of attack, spin loft and strike height too narrow).
 #define CARRY_POSTERIOR_LAPLACE 1
 
+// `CarryEstimateInput::measured` bit: the club speed was measured.
+#define CARRY_MEASURED_CLUB_SPEED 1
+
+// `CarryEstimateInput::measured` bit: the attack angle was measured.
+#define CARRY_MEASURED_ATTACK_ANGLE 2
+
+// `CarryEstimateInput::measured` bit: the club path was measured.
+#define CARRY_MEASURED_CLUB_PATH 4
+
+// `CarryEstimateInput::measured` bit: the face angle was measured.
+#define CARRY_MEASURED_FACE_ANGLE 8
+
+// `CarryEstimateInput::measured` bit: the dynamic loft was measured.
+#define CARRY_MEASURED_DYNAMIC_LOFT 16
+
 // `CarryEstimateResult::worst`: the measured ball speed.
 #define CARRY_DATUM_BALL_SPEED 0
 
@@ -59,21 +74,6 @@
 // `CarryEstimateResult::worst`: the club (its prior): the data need a delivery far from
 // its typical one.
 #define CARRY_DATUM_CLUB 10
-
-// `CarryEstimateInput::measured` bit: the club speed was measured.
-#define CARRY_MEASURED_CLUB_SPEED 1
-
-// `CarryEstimateInput::measured` bit: the attack angle was measured.
-#define CARRY_MEASURED_ATTACK_ANGLE 2
-
-// `CarryEstimateInput::measured` bit: the club path was measured.
-#define CARRY_MEASURED_CLUB_PATH 4
-
-// `CarryEstimateInput::measured` bit: the face angle was measured.
-#define CARRY_MEASURED_FACE_ANGLE 8
-
-// `CarryEstimateInput::measured` bit: the dynamic loft was measured.
-#define CARRY_MEASURED_DYNAMIC_LOFT 16
 
 // Default trajectory sample interval (s).
 #define CARRY_DEFAULT_RECORD_INTERVAL_S 0.1
@@ -1291,7 +1291,8 @@ enum carry_error_t carry_estimate_input_default_f64(const char *name, CarryEstim
 
 // Club data from ball data (issue 23, docs/estimate.md): the delivery that explains the
 // measured ball data, each datum with its 1σ; single precision. Writes `*out` on
-// `CARRY_OK` only.
+// `CARRY_OK` and on `CARRY_ERR_INCONSISTENT` (the data disagree with each other or with
+// the club: `out->worst` names the worst datum, issue 34) only.
 //
 // # Safety
 // `input` is NULL or points to a readable input, `out` NULL or to a writable result.

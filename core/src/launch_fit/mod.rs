@@ -182,8 +182,9 @@ impl<T: Real> Observations<T> {
         let bad = |f| Err(Error::invalid(f, Reason::OutOfRange));
         let mut last = T::zero();
         for p in &self.track {
-            if !(p.time_s.is_finite() && p.time_s >= last)
-                || !crate::real::all_finite(p.position_m.as_slice())
+            if !(p.time_s.is_finite()
+                && p.time_s >= last
+                && crate::real::all_finite(p.position_m.as_slice()))
             {
                 return bad(Field::Observation);
             }

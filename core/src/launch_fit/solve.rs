@@ -20,7 +20,7 @@ use super::{
     Settings, Source, UNKNOWNS, Workspace,
 };
 use crate::ball::Ball;
-use crate::error::{Error, Field, Result};
+use crate::error::{Error, Field, Reason, Result};
 use crate::estimate::spd::Cholesky;
 use crate::flight::FlightOutcome;
 use crate::real::{Real, lit};
@@ -174,6 +174,10 @@ pub(super) fn run<T: Real>(
     let mut x = m;
     let mut outcome = p.residuals(&x, z, sd, &mut ws.residual)?;
     let mut cost = p.cost(&ws.residual, &x);
+    if !cost.is_finite() {
+        // Observations (or 1σ) this precision cannot square: a typed error, not a NaN.
+        return Err(Error::invalid(Field::Observation, Reason::OutOfRange));
+    }
     let mut lambda = lit::<T>(LAMBDA_START);
     let tolerance = settings.tolerance;
     let mut iterations: u16 = 0;
@@ -267,10 +271,10 @@ pub(super) fn run<T: Real>(
         for _ in 0..MAX_REJECTS {
             let mut damped = a;
             for i in 0..UNKNOWNS {
-                if p.active.get(i).copied().unwrap_or(false) {
-                    if let Some(v) = damped.get_mut((i, i)) {
-                        *v *= T::one() + lambda;
-                    }
+                if p.active.get(i).copied().unwrap_or(false)
+                    && let Some(v) = damped.get_mut((i, i))
+                {
+                    *v *= T::one() + lambda;
                 }
             }
             let step = Cholesky::<T, UNKNOWNS>::factor(&damped)
@@ -371,6 +375,12 @@ fn finish<T: Real>(
         let v = cov.get((i, i)).copied().unwrap_or_else(T::zero);
         if v > T::zero() { v.root() } else { T::zero() }
     });
+    let chi2 = p.chi2(residual);
+    let finite =
+        chi2.is_finite() && sd.iter().all(|v| v.is_finite()) && x.iter().all(|v| v.is_finite());
+    if !finite {
+        return Err(Error::invalid(Field::Observation, Reason::OutOfRange));
+    }
     let measured_arr = measured.to_array();
     // Every free unknown must be pinned down by the observations.
     let ratio = lit::<T>(IDENTIFIED_RATIO);
@@ -407,7 +417,7 @@ fn finish<T: Real>(
         wind_mps: p.settings.fit_wind.then(|| [datum(5), datum(6)]),
         air_density_kgm3: p.settings.fit_air_density.then(|| datum(7)),
         flight,
-        chi2: p.chi2(residual),
+        chi2,
         worst_observation: row_kind(p.obs, worst_row),
         worst_residual_sigma: worst,
         observations: u16::try_from(p.rows).unwrap_or(u16::MAX),
