@@ -297,7 +297,7 @@ fn fit_in<T: Real>(p: &Params, n: &Numerics, r: &FlightRequest) -> Result<Flight
         ball_speed_mps: datum(r.ball_speed_mps, "ball_speed", |v| v)?,
         launch_angle_rad: datum(r.launch_angle_deg, "launch_angle", f64::to_radians)?,
         launch_direction_rad: datum(r.launch_direction_deg, "launch_direction", f64::to_radians)?,
-        spin_radps: datum(r.spin_rpm, "spin", |v| rpm(v))?,
+        spin_radps: datum(r.spin_rpm, "spin", rpm)?,
         spin_axis_rad: datum(r.spin_axis_deg, "spin_axis", f64::to_radians)?,
     };
     let mut obs = Observations::<T> {

@@ -363,9 +363,11 @@ fn bad_observations_name_their_field() {
     let scene = Scene::default();
     let s = Settings::default();
     let mut ws = Workspace::new();
-    let mut obs = Observations::default();
-    obs.carry_m = Some(Datum::new(f64::NAN, 1.0));
-    obs.side_m = Some(Datum::new(0.0, 1.0));
+    let mut obs = Observations {
+        carry_m: Some(Datum::new(f64::NAN, 1.0)),
+        side_m: Some(Datum::new(0.0, 1.0)),
+        ..Observations::default()
+    };
     let e = fit_launch(&ball, &scene, &measured(&v), &obs, &s, &mut ws).unwrap_err();
     assert!(
         matches!(

@@ -250,7 +250,7 @@ pub(super) fn run<T: Real>(
         let newton = chol.solve(&(-g)).map_err(|_| Error::IllPosed)?;
         let decrement = -g.dot(&newton);
         if !(decrement > tolerance * tolerance) {
-            mirror_check(&mut p, &x, cost, measured, z, sd, &mut ws.trial)?;
+            mirror_check(&mut p, &x, &chol, cost, measured, z, sd, &mut ws.trial)?;
             return finish(
                 &p,
                 &x,
@@ -308,7 +308,7 @@ pub(super) fn run<T: Real>(
         }
         if !accepted {
             // No damping makes the cost fall: stationary to the precision.
-            mirror_check(&mut p, &x, cost, measured, z, sd, &mut ws.trial)?;
+            mirror_check(&mut p, &x, &chol, cost, measured, z, sd, &mut ws.trial)?;
             return finish(
                 &p,
                 &x,
@@ -326,12 +326,13 @@ pub(super) fn run<T: Real>(
 /// The spin axis's sign must be seen: observations blind to left and right (no side, no
 /// lateral track, a trace from straight behind) fit a tilted axis by the carry it costs
 /// (`cos(axis)` of the backspin) equally well either way. When the axis was fitted, is
-/// off zero, and its mirror image (−axis, all else held) explains the data within one
-/// unit of cost, the fit refuses with [`Error::Unidentifiable`]`(`[`Field::SpinAxis`]`)`.
+/// more than two of its σ off zero, and its mirror image (−axis, all else held) explains
+/// the data within one unit of cost, the fit refuses with [`Error::Unidentifiable`]`(`[`Field::SpinAxis`]`)`.
 #[allow(clippy::too_many_arguments)]
 fn mirror_check<T: Real>(
     p: &mut Problem<'_, T>,
     x: &V<T>,
+    chol: &Cholesky<T, UNKNOWNS>,
     cost: T,
     measured: &MeasuredLaunch<T>,
     z: &[T; MAX_ROWS],
@@ -342,7 +343,19 @@ fn mirror_check<T: Real>(
         return Ok(());
     }
     let axis = get(x.as_slice(), 4);
-    if !(axis.abs() > lit::<T>(1e-3)) {
+    // Within two of its σ of zero the sign is not claimed anyway.
+    let var = chol
+        .inverse()
+        .ok()
+        .and_then(|c| c.get((4, 4)).copied())
+        .unwrap_or_else(T::zero);
+    let two_sd = lit::<T>(2.0)
+        * if var > T::zero() {
+            var.root()
+        } else {
+            T::zero()
+        };
+    if !(axis.abs() > lit::<T>(1e-3) && axis.abs() > two_sd) {
         return Ok(());
     }
     let mut mirror = *x;
