@@ -27,8 +27,10 @@ def test_round_trip_recovers_face_and_loft_from_the_forward_model():
     e = carry.estimate(club="driver", club_speed=45.0, attack_angle=-1.0, club_path=2.0,
                        raise_on_error=True, **launch_of(r))
     assert e["face_angle_deg"].shape == faces.shape
-    assert np.all(np.abs(e["face_angle_deg"] - faces) < 0.05)
-    assert np.all(np.abs(e["dynamic_loft_deg"] - 13.0) < 0.05)
+    # Noise-free ball data: the estimate lands within its own 1σ of the truth (the driver's
+    # calibrated ball noise, docs/estimate.md §8, lets the prior pull it by a fraction of σ).
+    assert np.all(np.abs(e["face_angle_deg"] - faces) < e["face_angle_deg_sd"])
+    assert np.all(np.abs(e["dynamic_loft_deg"] - 13.0) < e["dynamic_loft_deg_sd"])
     assert np.all(e["face_angle_deg_sd"] > 0)
     assert np.all(e["club_speed_estimated"] == 0.0)
     assert np.all(e["iterations"] >= 1)
