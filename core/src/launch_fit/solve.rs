@@ -181,7 +181,8 @@ pub(super) fn run<T: Real>(
     let mut lambda = lit::<T>(LAMBDA_START);
     let tolerance = settings.tolerance;
     let mut iterations: u16 = 0;
-    loop {
+    // Both exits (converged, or stationary to the precision) leave with the factor of A.
+    let chol = loop {
         // Jacobian columns of the active unknowns.
         for i in 0..UNKNOWNS {
             if !p.active.get(i).copied().unwrap_or(false) {
@@ -250,17 +251,7 @@ pub(super) fn run<T: Real>(
         let newton = chol.solve(&(-g)).map_err(|_| Error::IllPosed)?;
         let decrement = -g.dot(&newton);
         if !(decrement > tolerance * tolerance) {
-            mirror_check(&mut p, &x, &chol, cost, measured, z, sd, &mut ws.trial)?;
-            return finish(
-                &p,
-                &x,
-                &chol,
-                &spread,
-                measured,
-                outcome,
-                &ws.residual,
-                iterations,
-            );
+            break chol;
         }
         if iterations >= settings.max_iterations {
             return Err(Error::NoConvergence);
@@ -308,19 +299,21 @@ pub(super) fn run<T: Real>(
         }
         if !accepted {
             // No damping makes the cost fall: stationary to the precision.
-            mirror_check(&mut p, &x, &chol, cost, measured, z, sd, &mut ws.trial)?;
-            return finish(
-                &p,
-                &x,
-                &chol,
-                &spread,
-                measured,
-                outcome,
-                &ws.residual,
-                iterations,
-            );
+            break chol;
         }
-    }
+    };
+    let cov = chol.inverse().map_err(|_| Error::IllPosed)?;
+    mirror_check(&mut p, &x, &cov, cost, measured, z, sd, &mut ws.trial)?;
+    finish(
+        &p,
+        &x,
+        &cov,
+        &spread,
+        measured,
+        outcome,
+        &ws.residual,
+        iterations,
+    )
 }
 
 /// The spin axis's sign must be seen: observations blind to left and right (no side, no
@@ -332,7 +325,7 @@ pub(super) fn run<T: Real>(
 fn mirror_check<T: Real>(
     p: &mut Problem<'_, T>,
     x: &V<T>,
-    chol: &Cholesky<T, UNKNOWNS>,
+    cov: &M<T>,
     cost: T,
     measured: &MeasuredLaunch<T>,
     z: &[T; MAX_ROWS],
@@ -344,11 +337,7 @@ fn mirror_check<T: Real>(
     }
     let axis = get(x.as_slice(), 4);
     // Within two of its σ of zero the sign is not claimed anyway.
-    let var = chol
-        .inverse()
-        .ok()
-        .and_then(|c| c.get((4, 4)).copied())
-        .unwrap_or_else(T::zero);
+    let var = cov.get((4, 4)).copied().unwrap_or_else(T::zero);
     let two_sd = lit::<T>(2.0)
         * if var > T::zero() {
             var.root()
@@ -376,14 +365,13 @@ fn mirror_check<T: Real>(
 fn finish<T: Real>(
     p: &Problem<'_, T>,
     x: &V<T>,
-    chol: &Cholesky<T, UNKNOWNS>,
+    cov: &M<T>,
     spread: &[T; UNKNOWNS],
     measured: &MeasuredLaunch<T>,
     flight: FlightOutcome<T>,
     residual: &[T; MAX_ROWS],
     iterations: u16,
 ) -> Result<LaunchFit<T>> {
-    let cov = chol.inverse().map_err(|_| Error::IllPosed)?;
     let sd: [T; UNKNOWNS] = core::array::from_fn(|i| {
         let v = cov.get((i, i)).copied().unwrap_or_else(T::zero);
         if v > T::zero() { v.root() } else { T::zero() }
