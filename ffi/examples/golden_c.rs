@@ -22,7 +22,7 @@ use carry_core::Integrator;
 use carry_core::real::{Real, lit, to_f64};
 use carry_core::units::deg;
 use carry_ffi::error::CarryError;
-use carry_ffi::scene::{CARRY_AERO_DRIVES2026, CARRY_AERO_QUINTAVALLA, CARRY_AERO_TOUR2023};
+use carry_ffi::scene::{CARRY_AERO_QUINTAVALLA, CARRY_AERO_TOUR2023};
 use carry_ffi::*;
 use std::fmt::Write as _;
 
@@ -297,11 +297,6 @@ fn precision<T: Real>(
         runs.push((
             "tour2023".into(),
             CARRY_AERO_TOUR2023,
-            golden::c_settings(&Integrator::default()),
-        ));
-        runs.push((
-            "drives2026".into(),
-            CARRY_AERO_DRIVES2026,
             golden::c_settings(&Integrator::default()),
         ));
         for (run, aero, st) in runs {
