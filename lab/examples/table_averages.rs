@@ -100,11 +100,11 @@ fn main() {
         g[3]
     );
     println!("\ncorrelations (pooled):");
-    for i in 0..4 {
+    for (i, name) in SPREAD_NAMES.iter().enumerate() {
         let r: Vec<String> = (0..4)
             .map(|j| format!("{:+.2}", pooled.correlation(i, j)))
             .collect();
-        println!("  {:<18} {}", SPREAD_NAMES[i], r.join("  "));
+        println!("  {name:<18} {}", r.join("  "));
     }
 
     let tour = common::tour_2023().expect("../shared/data/trackman_tour_2023.csv");
