@@ -86,11 +86,16 @@
 // speed, attack and path at the head's CG (TrackMan's; the defaults' and the CLI's).
 #define CARRY_CONVENTION_TRACKMAN 1
 
-// `CarryScene::aero`: the calibrated default model, fitted to TrackMan's 2023 tour data.
+// `CarryScene::aero`: the modern model fitted to TrackMan's 2023 tour table and 2010
+// driver chart (the default before issue 35).
 #define CARRY_AERO_TOUR2023 0
 
 // `CarryScene::aero`: the seed's model (Quintavalla), which PHYSICS.md's numbers use.
 #define CARRY_AERO_QUINTAVALLA 1
+
+// `CarryScene::aero`: the calibrated default model, fitted to single TrackMan drives with
+// both tables (issue 35).
+#define CARRY_AERO_DRIVES2026 2
 
 // `CarryScene::air`: a fixed density, `air_density_kgm3`.
 #define CARRY_AIR_DENSITY 0
@@ -502,7 +507,7 @@ typedef struct CarryScene_f32 {
   uint32_t lift;
   // Spin decay on (non-zero) or off (0).
   uint32_t spin_decay;
-  // `CARRY_AERO_TOUR2023` (default) or `CARRY_AERO_QUINTAVALLA`.
+  // `CARRY_AERO_DRIVES2026` (default), `CARRY_AERO_TOUR2023` or `CARRY_AERO_QUINTAVALLA`.
   uint32_t aero;
   // `CARRY_AIR_DENSITY`, `CARRY_AIR_WEATHER_PRESSURE` or `CARRY_AIR_WEATHER_ALTITUDE`.
   uint32_t air;
@@ -660,7 +665,7 @@ typedef struct CarryScene_f64 {
   uint32_t lift;
   // Spin decay on (non-zero) or off (0).
   uint32_t spin_decay;
-  // `CARRY_AERO_TOUR2023` (default) or `CARRY_AERO_QUINTAVALLA`.
+  // `CARRY_AERO_DRIVES2026` (default), `CARRY_AERO_TOUR2023` or `CARRY_AERO_QUINTAVALLA`.
   uint32_t aero;
   // `CARRY_AIR_DENSITY`, `CARRY_AIR_WEATHER_PRESSURE` or `CARRY_AIR_WEATHER_ALTITUDE`.
   uint32_t air;
@@ -1354,13 +1359,13 @@ enum carry_error_t carry_launch_default_f32(CarryLaunchF32 *out);
 // `out` is NULL or points to a writable struct.
 enum carry_error_t carry_launch_default_f64(CarryLaunchF64 *out);
 
-// Fills `*out` with a scene: all effects, `tour2023`, 1.225 kg/m³, no wind, landing at 0 m, no ground; single precision.
+// Fills `*out` with a scene: all effects, `drives2026`, 1.225 kg/m³, no wind, landing at 0 m, no ground; single precision.
 //
 // # Safety
 // `out` is NULL or points to a writable struct.
 enum carry_error_t carry_scene_default_f32(CarrySceneF32 *out);
 
-// Fills `*out` with a scene: all effects, `tour2023`, 1.225 kg/m³, no wind, landing at 0 m, no ground; double precision.
+// Fills `*out` with a scene: all effects, `drives2026`, 1.225 kg/m³, no wind, landing at 0 m, no ground; double precision.
 //
 // # Safety
 // `out` is NULL or points to a writable struct.

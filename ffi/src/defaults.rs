@@ -107,7 +107,7 @@ pub unsafe extern "C" fn carry_launch_default_f64(out: *mut crate::CarryLaunchF6
     unsafe { init(out, crate::CarryLaunch::default) }
 }
 
-/// Fills `*out` with a scene: all effects, `tour2023`, 1.225 kg/m³, no wind, landing at 0 m, no ground; single precision.
+/// Fills `*out` with a scene: all effects, `drives2026`, 1.225 kg/m³, no wind, landing at 0 m, no ground; single precision.
 ///
 /// # Safety
 /// `out` is NULL or points to a writable struct.
@@ -117,7 +117,7 @@ pub unsafe extern "C" fn carry_scene_default_f32(out: *mut crate::CarrySceneF32)
     unsafe { init(out, crate::CarryScene::default) }
 }
 
-/// Fills `*out` with a scene: all effects, `tour2023`, 1.225 kg/m³, no wind, landing at 0 m, no ground; double precision.
+/// Fills `*out` with a scene: all effects, `drives2026`, 1.225 kg/m³, no wind, landing at 0 m, no ground; double precision.
 ///
 /// # Safety
 /// `out` is NULL or points to a writable struct.

@@ -9,10 +9,14 @@ use carry_core::scene::Scene;
 use carry_core::wind::{DEFAULT_EXPONENT, DEFAULT_REFERENCE_HEIGHT_M, Wind};
 use nalgebra::Vector3;
 
-/// `CarryScene::aero`: the calibrated default model, fitted to TrackMan's 2023 tour data.
+/// `CarryScene::aero`: the modern model fitted to TrackMan's 2023 tour table and 2010
+/// driver chart (the default before issue 35).
 pub const CARRY_AERO_TOUR2023: u32 = 0;
 /// `CarryScene::aero`: the seed's model (Quintavalla), which PHYSICS.md's numbers use.
 pub const CARRY_AERO_QUINTAVALLA: u32 = 1;
+/// `CarryScene::aero`: the calibrated default model, fitted to single TrackMan drives with
+/// both tables (issue 35).
+pub const CARRY_AERO_DRIVES2026: u32 = 2;
 
 /// `CarryScene::air`: a fixed density, `air_density_kgm3`.
 pub const CARRY_AIR_DENSITY: u32 = 0;
@@ -58,7 +62,7 @@ pub struct CarryScene<T> {
     pub lift: u32,
     /// Spin decay on (non-zero) or off (0).
     pub spin_decay: u32,
-    /// `CARRY_AERO_TOUR2023` (default) or `CARRY_AERO_QUINTAVALLA`.
+    /// `CARRY_AERO_DRIVES2026` (default), `CARRY_AERO_TOUR2023` or `CARRY_AERO_QUINTAVALLA`.
     pub aero: u32,
     /// `CARRY_AIR_DENSITY`, `CARRY_AIR_WEATHER_PRESSURE` or `CARRY_AIR_WEATHER_ALTITUDE`.
     pub air: u32,
@@ -105,7 +109,7 @@ pub struct CarryScene<T> {
 }
 
 impl<T: Real> Default for CarryScene<T> {
-    /// The CLI's defaults: all effects, `tour2023`, 1.225 kg/m³ (weather: 15 °C, dry, sea
+    /// The CLI's defaults: all effects, `drives2026`, 1.225 kg/m³ (weather: 15 °C, dry, sea
     /// level), no wind (profile: 10 m, 1/7), landing at 0 m, 60 s, standard gravity, no
     /// ground (green: 10 ft; custom turf: a firm fairway's).
     fn default() -> Self {
@@ -126,7 +130,7 @@ impl<T: Real> Default for CarryScene<T> {
             drag: 1,
             lift: 1,
             spin_decay: 1,
-            aero: CARRY_AERO_TOUR2023,
+            aero: CARRY_AERO_DRIVES2026,
             air: CARRY_AIR_DENSITY,
             air_density_kgm3: core.air.density_kgm3().unwrap_or_else(|_| T::zero()),
             temperature_c: lit(15.0),
@@ -185,6 +189,7 @@ impl<T: Real> CarryScene<T> {
         let aero = match self.aero {
             CARRY_AERO_TOUR2023 => AeroModel::tour_2023(),
             CARRY_AERO_QUINTAVALLA => AeroModel::quintavalla(),
+            CARRY_AERO_DRIVES2026 => AeroModel::drives_2026(),
             _ => return Err(CARRY_ERR_UNKNOWN_OPTION),
         };
         Ok(Scene {

@@ -17,7 +17,7 @@ use carry_core::real::Real;
 use carry_core::shot::{self, Fidelity};
 use carry_core::{Ball, Integrator};
 use carry_ffi::error::{ALL, CarryError, CarryError::*};
-use carry_ffi::scene::{CARRY_AERO_QUINTAVALLA, CARRY_AERO_TOUR2023};
+use carry_ffi::scene::{CARRY_AERO_DRIVES2026, CARRY_AERO_QUINTAVALLA, CARRY_AERO_TOUR2023};
 use carry_ffi::*;
 use core::ptr::{null, null_mut};
 use std::ffi::CStr;
@@ -159,6 +159,12 @@ fn flight_golden<T: Api>() {
             Integrator::default(),
             CARRY_AERO_TOUR2023,
             AeroModel::tour_2023(),
+        ));
+        runs.push((
+            "drives2026".into(),
+            Integrator::default(),
+            CARRY_AERO_DRIVES2026,
+            AeroModel::drives_2026(),
         ));
         for (name, integrator, aero, model) in runs {
             let core = case.input.outputs_with::<T>(&integrator, model);
@@ -369,7 +375,7 @@ fn bad_input_gives_the_right_code() {
     assert_eq!(run(&i), CARRY_ERR_OFF_FACE);
     for bad in [
         |i: &mut CarryShotInputF32| i.club.contact = 7,
-        |i: &mut CarryShotInputF32| i.scene.aero = 2,
+        |i: &mut CarryShotInputF32| i.scene.aero = 3,
         |i: &mut CarryShotInputF32| i.scene.air = 3,
         |i: &mut CarryShotInputF32| i.scene.wind = 3,
         |i: &mut CarryShotInputF32| i.scene.ground = 7,

@@ -299,10 +299,10 @@ pub struct SceneArgs {
     /// No spin decay (spin stays at its launch value).
     #[arg(long)]
     pub no_spin_decay: bool,
-    /// Aerodynamic model: `tour2023` (default: the modern model calibrated on TrackMan's
-    /// 2023 tour averages), `drives2026` (the same family fitted to single TrackMan drives
-    /// with both tables, docs/aero.md), `quintavalla` (the seed model of PHYSICS.md), or a
-    /// model file written by `carry fit --output`.
+    /// Aerodynamic model: `drives2026` (default: the modern model calibrated on single
+    /// TrackMan drives with the 2023 tour table and the 2010 driver chart, docs/aero.md),
+    /// `tour2023` (the same family fitted to the two tables alone), `quintavalla` (the seed
+    /// model of PHYSICS.md), or a model file written by `carry fit --output`.
     #[arg(long, value_name = "NAME|FILE.toml")]
     pub aero: Option<String>,
     /// Bounce and roll to rest on this ground: fairway, fairway-trackman (fitted to
@@ -558,7 +558,7 @@ pub enum BenchCmd {
         #[arg(long)]
         quick: bool,
         /// Aerodynamic model of the study's shots (the golden flights keep the seed's):
-        /// `tour2023` (default), `drives2026`, `quintavalla` or a model file.
+        /// `drives2026` (default), `tour2023`, `quintavalla` or a model file.
         #[arg(long, value_name = "NAME|FILE.toml")]
         aero: Option<String>,
     },

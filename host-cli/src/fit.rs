@@ -27,8 +27,8 @@ pub struct FitCmd {
     /// Write the fitted model here (TOML; use it with `--aero FILE.toml`).
     #[arg(long, value_name = "MODEL.toml")]
     pub output: Option<PathBuf>,
-    /// Do not fit: report how this model (`tour2023`, `quintavalla` or a model file) does
-    /// on the input (its family replaces --family).
+    /// Do not fit: report how this model (`drives2026`, `tour2023`, `quintavalla` or a model
+    /// file) does on the input (its family replaces --family).
     #[arg(long, value_name = "NAME|FILE.toml", conflicts_with = "output")]
     pub evaluate: Option<String>,
     /// Skip the leave-one-out cross-validation (one refit per row).

@@ -97,8 +97,8 @@ fn joint_rows() -> Option<(Vec<ShotRow>, usize)> {
     Some((rows, tour))
 }
 
-/// The committed default is what `carry fit --family modern` gives on both tables jointly
-/// (to the 4 significant digits it is committed with).
+/// `tour2023` (the default before issue 35) is what `carry fit --family modern` gives on
+/// both tables jointly (to the 4 significant digits it is committed with).
 #[test]
 fn the_calibrated_default_is_the_joint_fit_of_both_tables() {
     let Some((rows, _)) = joint_rows() else {
@@ -225,7 +225,7 @@ fn calibrated_default_errors_on_both_tables() {
 /// 1–8 %/s.
 #[test]
 fn calibrated_default_is_physically_plausible() {
-    // tour2023 (the default) and drives2026 (issue 35), over issue 21's range.
+    // drives2026 (the default, issue 35) and tour2023 (issue 21), over issue 21's range.
     for m in [
         AeroModel::<f64>::tour_2023(),
         AeroModel::<f64>::drives_2026(),
@@ -302,7 +302,7 @@ fn calibrated_default_f32_carry_within_a_centimetre_of_f64() {
     assert!(worst < 0.01, "{worst}");
 }
 
-/// The calibrated model pinned by a committed regression table: carry, apex and landing
+/// `tour2023` pinned by a committed regression table: carry, apex and landing
 /// angle of the 23 tour launches at the default fidelity in f64 (fit conditions).
 /// Produced by `CARRY_BLESS=1 cargo test -p carry-lab --test fit_aero regression_table`
 /// when the model is changed on purpose; any other change of its flights fails here.

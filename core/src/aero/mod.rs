@@ -1,9 +1,9 @@
 //! Aerodynamics: the models a scene can hold ([`AeroModel`]) and the flight's right-hand
 //! side. Families: the seed's linear one ([`LinearAero`]; Quintavalla's coefficients are
 //! the seed model) and the modern one ([`ModernAero`]; the calibrated default
-//! `tour2023`). Every family has the structure of Quintavalla (2002), "A generally
-//! applicable model for the aerodynamic behavior of golf balls", Science and Golf IV,
-//! 341–348 (PHYSICS.md), shown here with the seed's coefficients:
+//! `drives2026`, and `tour2023`). Every family has the structure of Quintavalla (2002), "A
+//! generally applicable model for the aerodynamic behavior of golf balls", Science and Golf
+//! IV, 341–348 (PHYSICS.md), shown here with the seed's coefficients:
 //!
 //! ```text
 //! v_r = v − w,  V = |v_r|,  Sp = |ω|·R / V

@@ -25,14 +25,14 @@ pub enum AeroModel<T> {
     /// The seed's linear family; [`AeroModel::quintavalla`] is the seed model itself.
     Linear(LinearAero<T>),
     /// The modern family (drag crisis, saturating lift, Smits & Smith spin decay);
-    /// [`AeroModel::tour_2023`] is the calibrated default.
+    /// [`AeroModel::drives_2026`] is the calibrated default.
     Modern(ModernAero<T>),
 }
 
-/// Names of the built-in models, default first: `tour2023` (the calibrated modern model),
-/// `quintavalla` (the seed model) and `drives2026` (the modern family fitted to single
-/// drives with both tables, issue 35).
-pub const BUILT_IN_MODELS: [&str; 3] = ["tour2023", "quintavalla", "drives2026"];
+/// Names of the built-in models, default first: `drives2026` (the calibrated default: the
+/// modern family fitted to single drives with both tables, issue 35), `tour2023` (the
+/// modern family fitted to the tables alone, issue 21) and `quintavalla` (the seed model).
+pub const BUILT_IN_MODELS: [&str; 3] = ["drives2026", "tour2023", "quintavalla"];
 
 impl<T: Real> AeroModel<T> {
     /// The seed model: Quintavalla's linear coefficients (bit for bit the golden files').
@@ -41,13 +41,15 @@ impl<T: Real> AeroModel<T> {
         Self::Linear(LinearAero::quintavalla())
     }
 
-    /// The calibrated default: the modern family fitted to TrackMan's 2023 tour averages.
+    /// The modern family fitted to TrackMan's 2023 tour averages and 2010 driver chart
+    /// (issue 21; the default before issue 35).
     #[must_use]
     pub fn tour_2023() -> Self {
         Self::Modern(ModernAero::tour_2023())
     }
 
-    /// The modern family fitted to TrackMan's single drives with both tables (issue 35).
+    /// The calibrated default: the modern family fitted to TrackMan's single drives with
+    /// both tables (issue 35).
     #[must_use]
     pub fn drives_2026() -> Self {
         Self::Modern(ModernAero::drives_2026())
@@ -155,9 +157,9 @@ impl<T: Real> AeroModel<T> {
 }
 
 impl<T: Real> Default for AeroModel<T> {
-    /// The calibrated default, [`AeroModel::tour_2023`].
+    /// The calibrated default, [`AeroModel::drives_2026`].
     fn default() -> Self {
-        Self::tour_2023()
+        Self::drives_2026()
     }
 }
 

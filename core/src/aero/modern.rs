@@ -73,7 +73,7 @@ pub struct ModernAero<T> {
     pub cl_low_saturation_spin: T,
 }
 
-/// The calibrated default ([`ModernAero::tour_2023`]) in `f64`, in the order of
+/// [`ModernAero::tour_2023`] (the default before issue 35) in `f64`, in the order of
 /// [`ModernAero::to_array`]. Produced by `carry fit --family modern --input
 /// ../shared/data/trackman_tour_2023.csv --temperature 21.1 --humidity 50 --pressure 101325`
 /// (docs/aero.md), rounded to 4 significant digits.
@@ -109,14 +109,15 @@ pub const MODERN_NAMES: [&str; MODERN_COEFFICIENTS] = [
 pub const MODERN_COEFFICIENTS: usize = 9;
 
 impl<T: Real> ModernAero<T> {
-    /// The calibrated default: fitted to TrackMan's 2023 PGA and LPGA tour averages.
+    /// Fitted to TrackMan's 2023 PGA and LPGA tour averages (the default before issue 35).
     #[must_use]
     pub fn tour_2023() -> Self {
         Self::from_array(TOUR_2023.map(lit))
     }
 
-    /// Fitted to TrackMan's single drives with both tables (issue 35): the low-spin lift
-    /// completes at S ≈ 0.24, not by 0.1 (the single drives at 1,500–3,000 rpm place it).
+    /// The calibrated default: fitted to TrackMan's single drives with both tables (issue
+    /// 35). The low-spin lift completes at S ≈ 0.24, not by 0.1 (the single drives at
+    /// 1,500–3,000 rpm place it).
     #[must_use]
     pub fn drives_2026() -> Self {
         Self::from_array(DRIVES_2026.map(lit))

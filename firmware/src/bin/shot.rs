@@ -87,7 +87,7 @@ fn main() -> ! {
         stack,
         stack_full
     );
-    // Scene::default() flies the calibrated model (tour2023), as a launch monitor would.
+    // Scene::default() flies the calibrated model (drives2026), as a launch monitor would.
     let off = carry - CALIBRATED_CARRY_M;
     defmt::println!("carry − f64 reference = {=f64} m", off);
     if off.abs() > 0.01 {

@@ -54,8 +54,8 @@ pub struct FitRequest {
     pub family: String,
     /// Write the fitted model here (TOML; use it with `--aero FILE.toml`).
     pub output: Option<PathBuf>,
-    /// Do not fit: report how this model (`tour2023`, `quintavalla` or a model file) does
-    /// on the input (its family replaces --family).
+    /// Do not fit: report how this model (`drives2026`, `tour2023`, `quintavalla` or a model
+    /// file) does on the input (its family replaces --family).
     pub evaluate: Option<String>,
     /// Skip the leave-one-out cross-validation (one refit per row).
     pub no_cross_validation: bool,
