@@ -430,12 +430,12 @@ fn indoor_tables(drives: &[Drive]) {
         n,
     );
     let mut best_by_session = Vec::new();
-    for session in 0..noise.len() {
+    for (session, session_noise) in noise.iter().enumerate() {
         let mine: Vec<SpinError> = shots
             .iter()
             .filter(|s| s.session == session)
             .filter_map(|s| {
-                s.fit(&held(s), &settings, &noise[session], ALL, false)
+                s.fit(&held(s), &settings, session_noise, ALL, false)
                     .ok()
                     .map(|f| SpinError::of(s, &f))
             })

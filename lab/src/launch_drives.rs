@@ -663,13 +663,13 @@ pub fn joint_weather(
                     .zip_map(&step, |x, d| x + scale * d)
                     .into(),
             );
-            if let Some(t) = totals(shots, scene, &cand, &start, noise, settings) {
-                if t.2 <= cost {
-                    w = cand;
-                    now = t;
-                    accepted = true;
-                    break;
-                }
+            if let Some(t) = totals(shots, scene, &cand, &start, noise, settings)
+                && t.2 <= cost
+            {
+                w = cand;
+                now = t;
+                accepted = true;
+                break;
             }
             scale *= 0.5;
         }
