@@ -695,7 +695,7 @@ pub fn joint_weather(
 
 /// Rows tracked outdoors more than this many rows apart start a new outing
 /// ([`outing_starts`]): the file has no dates, but its outdoor rows come in runs separated by
-/// 90 and more rows hit indoors (at 40: three outings of the premium ball, rows
+/// 77 and more rows hit indoors (at 40: three outings of the premium ball, rows
 /// 1,031–1,278, 1,370–1,700 and 1,778–1,999).
 pub const OUTING_GAP_ROWS: usize = 40;
 
