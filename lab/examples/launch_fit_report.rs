@@ -8,25 +8,33 @@
 //! Per set: mean |error| of spin (%), axis (°) and of the fitted launch's carry (m), the
 //! fraction within 1σ, the flights per fit and the host time per fit (median of the set).
 //!
-//! **Single drives** (`../shared/data/trackman_amateur_drives.csv`, read where it lies):
-//! spin and axis fitted from TrackMan's measured launch (speed, angle, direction) plus its
-//! apex, carry, side, flight time and landing angle, against TrackMan's spin and axis; the
-//! indoor rows in the data README's conditions (21.1 °C, 50 % RH, 101,325 Pa), the rows
-//! tracked outdoors also with their last tracked point and one wind and air density per
-//! session, fitted first from those rows without their spin.
+//! **Single drives** (`../shared/data/trackman_amateur_drives.csv`, read where it lies;
+//! [`carry_lab::launch_drives`]): spin and axis fitted from TrackMan's measured launch
+//! (speed, angle, direction) plus its apex, carry, side, flight time and landing angle,
+//! against TrackMan's spin and axis. Indoors (premium ball, the data README's air) with
+//! `tour2023`, `drives2026` and `drives2026` refitted without the shot's session block, the
+//! summaries' σ the CLI's or set from data; by spin and ball-speed band; which observations
+//! carry the spin; the spin's prior. Outdoors (the 340 tracked premium rows, with their last
+//! tracked point): standard air, each shot's own wind and density, and one weather per
+//! session and per outing fitted jointly with the spins (10-fold cross-validated).
 //!
-//! `cargo run --release -p carry-lab --example launch_fit_report [SHOTS]`
+//! `cargo run --release -p carry-lab --example launch_fit_report [SHOTS] [--only=synthetic|indoor|outdoor]`
 use std::time::Instant;
 
+use carry_core::aero::AeroModel;
 use carry_core::launch_fit::{
-    Datum, DopplerSample, LaunchFit, LaunchValues, MeasuredLaunch, Observations, Settings,
-    TrackPoint, Workspace, fit_launch,
+    Datum, DopplerSample, LaunchValues, MeasuredLaunch, Observations, Settings, TrackPoint,
+    Workspace, fit_launch,
 };
 use carry_core::units::{deg, rpm};
-use carry_core::{
-    Air, Ball, Integrator, Launch, Recorder, Sample, SampleSink, Scene, Weather, Wind,
-};
+use carry_core::{Ball, Integrator, Launch, Recorder, Sample, SampleSink, Scene};
 use carry_lab::drives::{BallKind, Drive, read_shared};
+use carry_lab::fit::single_shots::{SPEED_BANDS_MPH, SPIN_BANDS_RPM, SessionWeather, standard_air};
+use carry_lab::launch_drives::{
+    self, ALL, DRIVES_2026_WITHOUT_SESSION, JointWeather, Noise, SUMMARY_NAMES, Shot, SpinError,
+    SpinSummary, held_out_model, joint_weather, noise_from_residuals, outing_of, outing_starts,
+    sigma_scale, spin_information, summary_residuals, within,
+};
 use nalgebra::Vector3;
 use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -278,213 +286,453 @@ fn synthetic_table(shots: u64) {
     }
 }
 
-/// The README's conditions: 21.1 °C, 50 % RH, 101,325 Pa.
-fn standard_scene() -> Scene<f64> {
+fn scene_with(aero: AeroModel<f64>) -> Scene<f64> {
     Scene {
-        air: Air::Weather(Weather {
-            temperature_c: 21.1,
-            relative_humidity: 0.5,
-            pressure: carry_core::Pressure::Pa(101_325.0),
-        }),
+        aero,
+        air: standard_air(),
         ..Scene::default()
     }
 }
 
-fn drive_problem(
-    d: &Drive,
-    outdoor: bool,
-) -> Option<(MeasuredLaunch<f64>, Observations<f64>, [f64; 2])> {
-    let [speed, launch, direction, spin, axis] = d.full_launch()?;
-    let f = &d.flight;
-    let measured = LaunchValues {
-        ball_speed_mps: Some(Datum::new(speed, 0.2)),
-        launch_angle_rad: Some(Datum::new(deg(launch), deg(0.2))),
-        launch_direction_rad: Some(Datum::new(deg(direction), deg(0.3))),
-        spin_radps: None,
-        spin_axis_rad: None,
-    };
-    let mut obs = Observations {
-        apex_height_m: Some(Datum::new(f.apex_m?, 0.5)),
-        carry_m: Some(Datum::new(f.carry_m?, 1.0)),
-        side_m: Some(Datum::new(f.carry_side_m?, 0.5)),
-        flight_time_s: Some(Datum::new(f.flight_time_s?, 0.05)),
-        land_angle_rad: Some(Datum::new(deg(f.land_angle_deg?), deg(0.5))),
-        ..Observations::default()
-    };
-    if f.carry_m? < 20.0 || launch < 1.0 {
-        return None;
-    }
-    if outdoor {
-        let p = f.last_point_m?;
-        obs.track
-            .push(TrackPoint {
-                time_s: f.last_point_time_s?,
-                position_m: Vector3::new(p[0], p[1], p[2]),
-                sd_m: 0.5,
-            })
-            .ok()?;
-    }
-    Some((measured, obs, [rpm(spin), deg(axis)]))
+fn summary_row(name: &str, e: &SpinSummary, tried: usize) {
+    println!(
+        "| {name} | {} of {tried} | {:.1} % | {:+.1} % | {:+.1} % | {:.2}° | {:.2} / {:.2} |",
+        e.rows,
+        e.mean_abs_pct,
+        e.bias_pct,
+        e.median_pct,
+        e.axis_mean_abs_deg,
+        e.spin_within,
+        e.axis_within
+    );
 }
 
-fn fit_drive(
-    d: &Drive,
-    scene: &Scene<f64>,
+const SUMMARY_HEADER: &str = "| rows | fitted | spin mean |err| | bias | median | axis mean |err| | spin / axis within 1σ |\n|---|---:|---:|---:|---:|---:|---:|";
+
+/// Fits every shot with `scene_of(shot)` and `noise_of(shot)`; the errors, and the refused.
+fn errors_of(
+    shots: &[Shot],
+    scene_of: &(dyn Fn(&Shot) -> Scene<f64> + Sync),
+    noise_of: &(dyn Fn(&Shot) -> Noise + Sync),
     settings: &Settings<f64>,
-    outdoor: bool,
-) -> Option<(LaunchFit<f64>, [f64; 2])> {
-    let (m, obs, truth) = drive_problem(d, outdoor)?;
-    let mut ws = Box::new(Workspace::new());
-    match fit_launch(&Ball::standard(), scene, &m, &obs, settings, &mut ws) {
-        Ok(f) => Some((f, truth)),
-        Err(e) => {
-            if std::env::var_os("CARRY_FIT_ERRORS").is_some() {
-                eprintln!("row {}: {e}", d.index);
-            }
-            None
+    used: [bool; 5],
+    track: bool,
+) -> Vec<SpinError> {
+    shots
+        .par_iter()
+        .filter_map(
+            |s| match s.fit(&scene_of(s), settings, &noise_of(s), used, track) {
+                Ok(f) => Some(SpinError::of(s, &f)),
+                Err(e) => {
+                    if std::env::var_os("CARRY_FIT_ERRORS").is_some() {
+                        eprintln!("row {}: {e}", s.index);
+                    }
+                    None
+                }
+            },
+        )
+        .collect()
+}
+
+fn bands(errors: &[SpinError]) {
+    println!(
+        "\n| spin rpm | rows | spin mean |err| | bias | median | axis mean |err| | spin within 1σ |"
+    );
+    println!("|---|---:|---:|---:|---:|---:|---:|");
+    let band_row = |lo: f64, hi: f64, e: &SpinSummary| {
+        if e.rows > 0 {
+            println!(
+                "| {lo:.0}–{hi:.0} | {} | {:.1} % | {:+.1} % | {:+.1} % | {:.2}° | {:.2} |",
+                e.rows,
+                e.mean_abs_pct,
+                e.bias_pct,
+                e.median_pct,
+                e.axis_mean_abs_deg,
+                e.spin_within
+            );
         }
+    };
+    for (&(lo, hi), e) in SPIN_BANDS_RPM.iter().zip(SpinSummary::by_band(
+        errors,
+        |e| e.spin_rpm,
+        &SPIN_BANDS_RPM,
+    )) {
+        band_row(lo, hi, &e);
+    }
+    println!(
+        "\n| ball mph | rows | spin mean |err| | bias | median | axis mean |err| | spin within 1σ |"
+    );
+    println!("|---|---:|---:|---:|---:|---:|---:|");
+    for (&(lo, hi), e) in SPEED_BANDS_MPH.iter().zip(SpinSummary::by_band(
+        errors,
+        |e| e.ball_speed_mph,
+        &SPEED_BANDS_MPH,
+    )) {
+        band_row(lo, hi, &e);
     }
 }
 
-fn report_rows(name: &str, fits: &[(LaunchFit<f64>, [f64; 2])], tried: usize) {
-    let spin = mean(
-        fits.iter()
-            .map(|(f, t)| (f.value.spin_radps / t[0] - 1.0).abs()),
-    );
-    let bias = mean(fits.iter().map(|(f, t)| f.value.spin_radps / t[0] - 1.0));
-    let axis = mean(
-        fits.iter()
-            .map(|(f, t)| (f.value.spin_axis_rad - t[1]).abs().to_degrees()),
-    );
-    let within = mean(fits.iter().map(|(f, t)| {
-        f64::from(u8::from(
-            (f.value.spin_radps - t[0]).abs() <= f.sd.spin_radps,
-        ))
-    }));
+/// Per held-out session: the summaries' σ from the robust scatter of TrackMan's summaries
+/// about the held-out model's flight of TrackMan's launch, on the *other* sessions.
+fn data_noise(shots: &[Shot]) -> Vec<Noise> {
+    (0..DRIVES_2026_WITHOUT_SESSION.len())
+        .map(|s| {
+            let scene = scene_with(held_out_model(s));
+            let residuals: Vec<[f64; 5]> = shots
+                .par_iter()
+                .filter(|x| x.session != s)
+                .filter_map(|x| summary_residuals(x, &scene).ok())
+                .collect();
+            noise_from_residuals(&residuals, Noise::RADAR)
+        })
+        .collect()
+}
+
+fn print_noise(name: &str, n: &Noise) {
     println!(
-        "| {name} | {} of {tried} | {:.1} % ({:+.1} %) | {:.2}° | {:.2} |",
-        fits.len(),
-        100.0 * spin,
-        100.0 * bias,
-        axis,
-        within
+        "| {name} | {:.2} m | {:.2} m | {:.2} m | {:.3} s | {:.2}° |",
+        n.summaries[0],
+        n.summaries[1],
+        n.summaries[2],
+        n.summaries[3],
+        n.summaries[4].to_degrees()
     );
 }
 
-fn drives_table() -> Result<(), String> {
-    let drives = read_shared()?;
-    println!(
-        "\n## Single TrackMan drives: spin and axis from the measured launch + apex, carry, side, flight time, landing angle\n"
-    );
-    println!("| rows | fitted | spin mean |err| (bias) | axis mean |err| | spin within 1σ |");
-    println!("|---|---:|---:|---:|---:|");
-    let scene = standard_scene();
-    let settings = Settings::default();
-    let indoor: Vec<&Drive> = drives
+fn indoor_tables(drives: &[Drive]) {
+    let shots: Vec<Shot> = drives
         .iter()
         .filter(|d| !d.tracked_outdoors() && d.ball == BallKind::Premium)
+        .filter_map(Shot::of)
         .collect();
-    let fits: Vec<_> = indoor
-        .par_iter()
-        .filter_map(|d| fit_drive(d, &scene, &settings, false))
-        .collect();
-    report_rows(
-        "indoor, premium (TrackMan's own flight model)",
-        &fits,
-        indoor.len(),
+    let n = shots.len();
+    let settings = Settings::default();
+    println!(
+        "\n## Single TrackMan drives, premium, indoors: spin and axis from the measured launch + apex, carry, side, flight time, landing angle ({n} rows)\n"
     );
-    for session in 0..5 {
-        let rows: Vec<&Drive> = indoor
+    println!("{SUMMARY_HEADER}");
+    let radar = |_: &Shot| Noise::RADAR;
+    let tour = scene_with(AeroModel::tour_2023());
+    let e = errors_of(&shots, &|_| tour, &radar, &settings, ALL, false);
+    summary_row("tour2023, CLI σ", &SpinSummary::of(&e), n);
+    let d26 = scene_with(AeroModel::drives_2026());
+    let e = errors_of(&shots, &|_| d26, &radar, &settings, ALL, false);
+    summary_row("drives2026 in sample, CLI σ", &SpinSummary::of(&e), n);
+    let held = |s: &Shot| scene_with(held_out_model(s.session));
+    let e = errors_of(&shots, &held, &radar, &settings, ALL, false);
+    summary_row("**drives2026 held out, CLI σ**", &SpinSummary::of(&e), n);
+    let noise = data_noise(&shots);
+    let from_data = |s: &Shot| noise[s.session];
+    let best = errors_of(&shots, &held, &from_data, &settings, ALL, false);
+    summary_row(
+        "**drives2026 held out, σ from data**",
+        &SpinSummary::of(&best),
+        n,
+    );
+    let mut best_by_session = Vec::new();
+    for (session, session_noise) in noise.iter().enumerate() {
+        let mine: Vec<SpinError> = shots
             .iter()
-            .copied()
-            .filter(|d| d.session() == session)
+            .filter(|s| s.session == session)
+            .filter_map(|s| {
+                s.fit(&held(s), &settings, session_noise, ALL, false)
+                    .ok()
+                    .map(|f| SpinError::of(s, &f))
+            })
             .collect();
-        let fits: Vec<_> = rows
-            .par_iter()
-            .filter_map(|d| fit_drive(d, &scene, &settings, false))
+        let tried = shots.iter().filter(|s| s.session == session).count();
+        summary_row(
+            &format!("— session {session}"),
+            &SpinSummary::of(&mine),
+            tried,
+        );
+        best_by_session.push(mine);
+    }
+    // The fit's 1σ calibrated: per held-out session, the factor that puts 68 % of the
+    // training sessions' spin errors within k σ (their fits with the same held-out model).
+    println!(
+        "\nThe spin's 1σ scaled by k from the other sessions (drives2026 held out, σ from data):\n"
+    );
+    println!("| held out | k (from the other sessions) | held-out spin within k·σ |");
+    println!("|---|---:|---:|");
+    let mut all_z = Vec::new();
+    let mut all_scaled = Vec::new();
+    for session in 0..noise.len() {
+        let scene = scene_with(held_out_model(session));
+        let train: Vec<Shot> = shots
+            .iter()
+            .filter(|s| s.session != session)
+            .cloned()
             .collect();
-        if !fits.is_empty() {
-            report_rows(&format!("— session {session}"), &fits, rows.len());
+        let z: Vec<f64> = errors_of(
+            &train,
+            &|_| scene,
+            &|_| noise[session],
+            &settings,
+            ALL,
+            false,
+        )
+        .iter()
+        .map(|e| e.spin_z)
+        .collect();
+        let k = sigma_scale(&z);
+        let mine: Vec<f64> = best_by_session[session].iter().map(|e| e.spin_z).collect();
+        println!("| session {session} | {k:.2} | {:.2} |", within(&mine, k));
+        all_scaled.extend(mine.iter().map(|z| z / k));
+        all_z.extend(mine);
+    }
+    println!(
+        "| all | | {:.2} (unscaled {:.2}) |",
+        within(&all_scaled, 1.0),
+        within(&all_z, 1.0)
+    );
+    println!(
+        "\nσ from data (1.4826 × MAD of model − TrackMan at TrackMan's launch, other sessions):\n"
+    );
+    println!("| held out | apex | carry | side | flight time | landing |");
+    println!("|---|---:|---:|---:|---:|---:|");
+    print_noise("CLI defaults", &Noise::RADAR);
+    for (s, x) in noise.iter().enumerate() {
+        print_noise(&format!("session {s}"), x);
+    }
+    println!("\nBy band (drives2026 held out, σ from data):");
+    bands(&best);
+
+    // Which observations carry the spin.
+    let info: Vec<[f64; 5]> = shots
+        .par_iter()
+        .filter_map(|s| spin_information(s, &held(s), &noise[s.session]).ok())
+        .collect();
+    println!(
+        "\nShare of the spin's information, (∂h/∂ω/σ)² normalised, mean over {} rows (held out, σ from data):\n",
+        info.len()
+    );
+    println!("| {} |", SUMMARY_NAMES.join(" | "));
+    println!("|---:|---:|---:|---:|---:|");
+    #[allow(clippy::cast_precision_loss)]
+    let m = info.len() as f64;
+    println!(
+        "| {} |",
+        (0..5)
+            .map(|i| format!("{:.2}", info.iter().map(|x| x[i]).sum::<f64>() / m))
+            .collect::<Vec<_>>()
+            .join(" | ")
+    );
+    println!("\nObservation subsets (held out, σ from data):\n");
+    println!("{SUMMARY_HEADER}");
+    for (i, name) in SUMMARY_NAMES.iter().enumerate() {
+        let mut used = ALL;
+        used[i] = false;
+        let e = errors_of(&shots, &held, &from_data, &settings, used, false);
+        summary_row(&format!("all but {name}"), &SpinSummary::of(&e), n);
+    }
+    for i in [0, 1, 3, 4] {
+        let mut used = [false; 5];
+        used[i] = true;
+        used[2] = true;
+        let e = errors_of(&shots, &held, &from_data, &settings, used, false);
+        summary_row(
+            &format!("{} + side only", SUMMARY_NAMES[i]),
+            &SpinSummary::of(&e),
+            n,
+        );
+    }
+    println!("\nThe spin's prior (held out, σ from data; default 4,000 ± 3,000 rpm):\n");
+    println!("{SUMMARY_HEADER}");
+    for (mean, sd) in [(4000.0, 30_000.0), (2500.0, 1500.0), (6000.0, 3000.0)] {
+        let mut s = Settings::default();
+        s.prior.mean.spin_radps = rpm(mean);
+        s.prior.sd.spin_radps = rpm(sd);
+        let e = errors_of(&shots, &held, &from_data, &s, ALL, false);
+        summary_row(
+            &format!("prior {mean:.0} ± {sd:.0} rpm"),
+            &SpinSummary::of(&e),
+            n,
+        );
+    }
+}
+
+fn weather_line(name: &str, j: &JointWeather) {
+    println!(
+        "| {name} | {} | {:.3} ± {:.3} kg/m³ | {:+.2} ± {:.2} m/s | {:+.2} ± {:.2} m/s | {} |",
+        j.fitted,
+        j.weather.density_kgm3,
+        j.sd[0],
+        j.weather.tail_wind_mps,
+        j.sd[1],
+        j.weather.cross_wind_mps,
+        j.sd[2],
+        j.iterations
+    );
+}
+
+/// Cross-validated joint weather over `groups` (each a list of shots): within a group,
+/// every `folds`-th shot held out in turn, the weather fitted jointly on the others and
+/// the held-out shots' spin fitted in it.
+fn joint_cv(
+    groups: &[Vec<&Shot>],
+    noise: &Noise,
+    folds: usize,
+    starts: &[SessionWeather],
+) -> Vec<SpinError> {
+    let settings = Settings::default();
+    let mut out = Vec::new();
+    for (g, start) in groups.iter().zip(starts) {
+        let scene = scene_with(held_out_model(g[0].session));
+        for k in 0..folds {
+            let train: Vec<&Shot> = g
+                .iter()
+                .enumerate()
+                .filter(|(i, _)| i % folds != k)
+                .map(|(_, s)| *s)
+                .collect();
+            let Ok(j) = joint_weather(&train, &scene, *start, noise, &settings, 12) else {
+                continue;
+            };
+            let fitted = launch_drives::in_weather(&scene, &j.weather);
+            out.extend(
+                g.iter()
+                    .enumerate()
+                    .filter(|(i, _)| i % folds == k)
+                    .filter_map(|(_, s)| {
+                        s.fit(&fitted, &settings, noise, ALL, true)
+                            .ok()
+                            .map(|f| SpinError::of(s, &f))
+                    }),
+            );
         }
     }
-    // Outdoors: one wind and density per session from its rows, without their spin.
-    let outdoor: Vec<&Drive> = drives
+    out
+}
+
+fn outdoor_tables(drives: &[Drive]) {
+    let shots: Vec<Shot> = drives
         .iter()
         .filter(|d| d.tracked_outdoors() && d.ball == BallKind::Premium)
+        .filter_map(Shot::of)
         .collect();
-    let standard = standard_scene();
-    let free = Settings {
-        fit_wind: true,
-        fit_air_density: true,
-        ..Settings::default()
-    };
-    for session in 0..5 {
-        let rows: Vec<&Drive> = outdoor
-            .iter()
-            .copied()
-            .filter(|d| d.session() == session)
-            .collect();
-        if rows.is_empty() {
-            continue;
-        }
-        let weather: Vec<LaunchFit<f64>> = rows
-            .par_iter()
-            .filter_map(|d| fit_drive(d, &standard, &free, true).map(|f| f.0))
-            .collect();
-        let wx = median(
-            weather
-                .iter()
-                .filter_map(|f| f.wind_mps.map(|w| w[0].value))
-                .collect(),
-        );
-        let wz = median(
-            weather
-                .iter()
-                .filter_map(|f| f.wind_mps.map(|w| w[1].value))
-                .collect(),
-        );
-        let rho = median(
-            weather
-                .iter()
-                .filter_map(|f| f.air_density_kgm3.map(|d| d.value))
-                .collect(),
-        );
+    let n = shots.len();
+    let indoor: Vec<Shot> = drives
+        .iter()
+        .filter(|d| !d.tracked_outdoors() && d.ball == BallKind::Premium)
+        .filter_map(Shot::of)
+        .collect();
+    let noise_data = data_noise(&indoor);
+    let settings = Settings::default();
+    let held = |s: &Shot| scene_with(held_out_model(s.session));
+    let starts = outing_starts(drives);
+    for (noise_name, noise_of) in [
+        (
+            "CLI σ",
+            Box::new(|_: &Shot| Noise::RADAR) as Box<dyn Fn(&Shot) -> Noise + Sync>,
+        ),
+        ("σ from data", Box::new(|s: &Shot| noise_data[s.session])),
+    ] {
+        let noise = noise_of(&shots[0]);
         println!(
-            "| session {session} outdoors: weather from {} rows: wind {wx:+.1} m/s downrange, {wz:+.1} m/s right; air {rho:.3} kg/m³ | | | | |",
-            weather.len()
+            "\n## Tracked outdoors, premium ({n} rows; drives2026 without their session; {noise_name}; + the last tracked point, 0.5 m)\n"
         );
-        let fitted = Scene {
-            air: Air::Density(rho),
-            wind: Wind::Uniform(Vector3::new(wx, 0.0, wz)),
-            ..Scene::default()
+        println!("{SUMMARY_HEADER}");
+        let e = errors_of(&shots, &held, &noise_of, &settings, ALL, true);
+        summary_row("standard air, no wind", &SpinSummary::of(&e), n);
+        let free = Settings {
+            fit_wind: true,
+            fit_air_density: true,
+            ..Settings::default()
         };
-        let fits: Vec<_> = rows
-            .par_iter()
-            .filter_map(|d| fit_drive(d, &fitted, &settings, true))
+        let e = errors_of(&shots, &held, &noise_of, &free, ALL, true);
+        summary_row("each shot's own wind and density", &SpinSummary::of(&e), n);
+        let standard = SessionWeather {
+            density_kgm3: standard_air().density_kgm3().unwrap_or(1.2),
+            tail_wind_mps: 0.0,
+            cross_wind_mps: 0.0,
+        };
+        // One weather per session block, then per outing.
+        let mut sessions: Vec<usize> = shots.iter().map(|s| s.session).collect();
+        sessions.dedup();
+        let by_session: Vec<Vec<&Shot>> = sessions
+            .iter()
+            .map(|&k| shots.iter().filter(|s| s.session == k).collect())
             .collect();
-        report_rows(
-            &format!("outdoor, premium, session {session}, fitted weather"),
-            &fits,
-            rows.len(),
-        );
-        let fits: Vec<_> = rows
-            .par_iter()
-            .filter_map(|d| fit_drive(d, &standard, &settings, true))
+        let mut outings: Vec<usize> = shots.iter().map(|s| outing_of(&starts, s.index)).collect();
+        outings.dedup();
+        let by_outing: Vec<Vec<&Shot>> = outings
+            .iter()
+            .map(|&k| {
+                shots
+                    .iter()
+                    .filter(|s| outing_of(&starts, s.index) == k)
+                    .collect()
+            })
             .collect();
-        report_rows(
-            &format!("outdoor, premium, session {session}, standard air"),
-            &fits,
-            rows.len(),
+        let mut weather_rows = Vec::new();
+        for (label, groups) in [("session", &by_session), ("outing", &by_outing)] {
+            let mut fitted_starts = Vec::new();
+            for g in groups.iter() {
+                let scene = scene_with(held_out_model(g[0].session));
+                let t = Instant::now();
+                match joint_weather(g, &scene, standard, &noise, &settings, 12) {
+                    Ok(j) => {
+                        weather_rows.push((
+                            format!(
+                                "{label}: rows {}–{} ({} shots, {:.0} s)",
+                                g[0].index,
+                                g[g.len() - 1].index,
+                                g.len(),
+                                t.elapsed().as_secs_f64()
+                            ),
+                            j.clone(),
+                        ));
+                        fitted_starts.push(j.weather);
+                    }
+                    Err(e) => {
+                        println!("| {label} from row {}: {e} | | | | | | |", g[0].index);
+                        fitted_starts.push(standard);
+                    }
+                }
+            }
+            let e = joint_cv(groups, &noise, 10, &fitted_starts);
+            summary_row(
+                &format!(
+                    "**one weather per {label}, fitted jointly on the other shots (10-fold)**"
+                ),
+                &SpinSummary::of(&e),
+                n,
+            );
+        }
+        println!(
+            "\n| joint weather (all the group's shots) | shots fitted | air density | tail wind | cross wind | iterations |"
         );
+        println!("|---|---:|---:|---:|---:|---:|");
+        for (name, j) in &weather_rows {
+            weather_line(name, j);
+        }
+    }
+}
+
+fn drives_tables(which: &str) -> Result<(), String> {
+    let drives = read_shared()?;
+    if which != "outdoor" {
+        indoor_tables(&drives);
+    }
+    if which != "indoor" {
+        outdoor_tables(&drives);
     }
     Ok(())
 }
 
 fn main() -> Result<(), String> {
-    let shots = std::env::args()
-        .nth(1)
-        .and_then(|a| a.parse().ok())
-        .unwrap_or(200);
-    synthetic_table(shots);
-    drives_table()
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let shots = args.iter().find_map(|a| a.parse().ok()).unwrap_or(200);
+    let only = args
+        .iter()
+        .find_map(|a| a.strip_prefix("--only="))
+        .unwrap_or("all");
+    if only == "all" || only == "synthetic" {
+        synthetic_table(shots);
+    }
+    if only != "synthetic" {
+        drives_tables(only)?;
+    }
+    Ok(())
 }

@@ -111,7 +111,7 @@ pub struct LaunchMeasured {
 pub struct FlightMeasured {
     /// Apex height, m.
     pub apex_m: Option<f64>,
-    /// The last tracked point: downrange, side, height (m) and time (s).
+    /// The last tracked point in the frame G: downrange, height, side (m); its time below.
     pub last_point_m: Option<[f64; 3]>,
     /// Time of the last tracked point, s.
     pub last_point_time_s: Option<f64>,

@@ -15,6 +15,8 @@
 //! * [`bag`]: the bag from delivery alone against TrackMan's 2023 tour averages.
 //! * [`launch_fit`]: the launch from the flight as a typed request (`carry estimate --from
 //!   flight`), and the track file reader.
+//! * [`launch_drives`]: the launch fit on the single drives against TrackMan's spin (held-out
+//!   aerodynamics, data-set observation noise, one weather per group of outdoor shots).
 //! * [`drives`]: single TrackMan drives (`../shared/data/trackman_amateur_drives.csv`), read
 //!   where they lie, with session blocks for cross-validation.
 //!
@@ -32,6 +34,7 @@ pub mod error;
 pub mod fit;
 pub mod ground_drives;
 pub mod ground_fit;
+pub mod launch_drives;
 pub mod launch_fit;
 pub mod normalize;
 pub mod optimize;
