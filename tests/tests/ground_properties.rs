@@ -92,6 +92,7 @@ fn surface<T: Real>(c: &Case) -> Surface<T> {
             crater_scale: lit(c.turf[3]),
             crater_fade_mps: lit(carry_core::ground::bounce::CRATER_FADE_NORMAL_SPEED_MPS),
             grass_drag_s2pm2: lit(carry_core::ground::surface::GRASS_DRAG_S2PM2),
+            crater_law: carry_core::ground::CraterLaw::Penner,
         }),
     }
 }
