@@ -313,7 +313,6 @@ fn surfaces() -> impl Strategy<Value = Surface<f64>> {
                 crater_fade_mps: carry_core::ground::bounce::CRATER_FADE_NORMAL_SPEED_MPS,
                 grass_drag_s2pm2: carry_core::ground::surface::GRASS_DRAG_S2PM2,
                 crater_law: carry_core::ground::CraterLaw::Penner,
-                crater_law: carry_core::ground::CraterLaw::Penner,
             })
         }),
     ]
