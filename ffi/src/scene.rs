@@ -121,6 +121,7 @@ impl<T: Real> Default for CarryScene<T> {
             crater_scale: T::zero(),
             crater_fade_mps: T::one(),
             grass_drag_s2pm2: T::zero(),
+            crater_law: carry_core::ground::CraterLaw::Penner,
         });
         let stimp = match Surface::<T>::green() {
             Surface::Green { stimp_m } => stimp_m,

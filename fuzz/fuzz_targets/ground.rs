@@ -8,7 +8,7 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 use carry_core::flight::{Integrator, Recorder, Sample};
-use carry_core::ground::{Ground, MAX_BOUNCES, Surface, Turf};
+use carry_core::ground::{CraterLaw, Ground, MAX_BOUNCES, Surface, Turf};
 use carry_core::real::{lit, to_f64};
 use carry_core::scene::Scene;
 use carry_core::wind::Wind;
@@ -48,6 +48,11 @@ fn surface<T: Real>(b: &mut Bytes<'_>) -> Surface<T> {
             crater_scale: lit(wild(b, 0.0, 3.0)),
             crater_fade_mps: lit(wild(b, 0.0, 120.0)),
             grass_drag_s2pm2: lit(wild(b, 0.0, 1.0)),
+            crater_law: if b.byte() % 2 == 0 {
+                CraterLaw::Penner
+            } else {
+                CraterLaw::NormalTangential
+            },
         }),
     }
 }

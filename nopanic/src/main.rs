@@ -11,7 +11,7 @@
 use carry_core::aero::AeroModel;
 use carry_core::air::{Air, Pressure, Weather};
 use carry_core::flight::{Integrator, Recorder, Sample, fly};
-use carry_core::ground::{Ground, Surface, Turf};
+use carry_core::ground::{CraterLaw, Ground, Surface, Turf};
 use carry_core::impact::{self, CompliantContact, ContactLaw, Solver};
 use carry_core::linalg::Pivoting;
 use carry_core::scene::{Effects, Scene};
@@ -269,6 +269,11 @@ fn ground<T: Real>() -> Option<Ground<T>> {
             crater_scale: x(1.0),
             crater_fade_mps: x(6.0),
             grass_drag_s2pm2: x(0.07),
+            crater_law: if black_box(0_u8) == 0 {
+                CraterLaw::Penner
+            } else {
+                CraterLaw::NormalTangential
+            },
         }),
     };
     match black_box(1_u8) {

@@ -164,6 +164,7 @@ fn absurd_surfaces_are_named_errors() {
         crater_scale: 1.0,
         crater_fade_mps: carry_core::ground::bounce::CRATER_FADE_NORMAL_SPEED_MPS,
         grass_drag_s2pm2: carry_core::ground::surface::GRASS_DRAG_S2PM2,
+        crater_law: carry_core::ground::CraterLaw::Penner,
     };
     for (t, field) in [
         (turf(1.01, 0.4, 0.1), carry_core::Field::GroundRestitution),
@@ -311,6 +312,7 @@ fn surfaces() -> impl Strategy<Value = Surface<f64>> {
                 crater_scale: k,
                 crater_fade_mps: carry_core::ground::bounce::CRATER_FADE_NORMAL_SPEED_MPS,
                 grass_drag_s2pm2: carry_core::ground::surface::GRASS_DRAG_S2PM2,
+                crater_law: carry_core::ground::CraterLaw::Penner,
             })
         }),
     ]

@@ -42,7 +42,7 @@ fn cases() -> impl Strategy<Value = Case> {
             -300.0..1300.0,
             -400.0..400.0,
         ),
-        (0u8..5, 0.31..9.0, [0.0..1.0, 0.0..2.0, 0.0..1.0, 0.0..3.0]),
+        (0u8..7, 0.31..9.0, [0.0..1.0, 0.0..2.0, 0.0..1.0, 0.0..3.0]),
         (
             0.0..1.0,
             -3.2..3.2,
@@ -85,6 +85,7 @@ fn surface<T: Real>(c: &Case) -> Surface<T> {
         3 => Surface::Green {
             stimp_m: lit(c.stimp_m),
         },
+        5 => Surface::FairwayTrackman,
         _ => Surface::Custom(Turf {
             restitution: lit(c.turf[0]),
             friction: lit(c.turf[1]),
@@ -92,6 +93,11 @@ fn surface<T: Real>(c: &Case) -> Surface<T> {
             crater_scale: lit(c.turf[3]),
             crater_fade_mps: lit(carry_core::ground::bounce::CRATER_FADE_NORMAL_SPEED_MPS),
             grass_drag_s2pm2: lit(carry_core::ground::surface::GRASS_DRAG_S2PM2),
+            crater_law: if c.surface == 6 {
+                carry_core::ground::CraterLaw::NormalTangential
+            } else {
+                carry_core::ground::CraterLaw::Penner
+            },
         }),
     }
 }

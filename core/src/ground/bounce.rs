@@ -6,7 +6,8 @@
 //!
 //! ```text
 //! crater tilt        θ_c = κ · 15.4° · (v / 18.6 m/s) · (φ / 44.4°) · min(1, v_n / v_f),
-//!                    clamped to [0, φ]
+//!                    clamped to [0, φ] (CraterLaw::Penner), or with (v_n v_t / v)/9.298 m/s
+//!                    for (v / 18.6 m/s)(φ / 44.4°) (CraterLaw::NormalTangential, issue 35)
 //! tilted components  u = v_t cos θ_c − v_n sin θ_c,   v_n' = v_t sin θ_c + v_n cos θ_c
 //! restitution        e = (e₀/0.510) · (0.510 − 0.0375 v_n' + 0.000903 v_n'²)  (v_n' ≤ 20 m/s)
 //!                    e = (e₀/0.510) · 0.120                                     (v_n' > 20 m/s)
@@ -35,7 +36,7 @@
 //! stops at rolling.
 
 use super::normal::Normal;
-use super::surface::{PENNER_RESTITUTION_0, Turf};
+use super::surface::{CraterLaw, PENNER_RESTITUTION_0, Turf};
 use crate::real::{Real, larger, length, lit, smaller};
 use nalgebra::Vector3;
 
@@ -45,6 +46,9 @@ const CRATER_REFERENCE_RAD: f64 = 15.4 * core::f64::consts::PI / 180.0;
 const CRATER_REFERENCE_SPEED_MPS: f64 = 18.6;
 /// Reference impact angle from the normal of the crater law (rad): 44.4°.
 const CRATER_REFERENCE_ANGLE_RAD: f64 = 44.4 * core::f64::consts::PI / 180.0;
+/// `v_n v_t / v` at the crater law's reference impact (m/s):
+/// `18.6 · sin 44.4° · cos 44.4°` = 9.298 m/s.
+const CRATER_REFERENCE_NORMAL_TANGENTIAL_MPS: f64 = 9.297_960;
 /// Normal speed below which the crater tilt fades out linearly (m/s). Issue 12 took
 /// Penner's reference impact's, 18.6 m/s · cos 44.4° = 13.29 m/s; 6 m/s matches
 /// TrackMan's roll after shallow landings (a 15° landing at 27 m/s rolls 40 yd; the
@@ -139,12 +143,22 @@ pub(crate) fn rebound<T: Real, N: Normal<T>>(
     let b = -n.cross(&t);
     let w = spin.dot(&b);
     let phi = crate::geometry::atan2_first_quadrant_of_squares(vt_sq, vn * vn);
-    // θ_c = κ·15.4°·(v/18.6)·(φ/44.4°)·min(1, v_n/v_f): everything but φ first.
-    let per_speed_angle =
-        lit::<T>(CRATER_REFERENCE_RAD / (CRATER_REFERENCE_SPEED_MPS * CRATER_REFERENCE_ANGLE_RAD));
-    // Faded out below the reference normal speed (see the module docs).
+    // Faded out below the turf's fade speed (see the module docs).
     let fade = smaller(vn / turf.crater_fade_mps, T::one());
-    let tilt = turf.crater_scale * per_speed_angle * speed * fade * phi;
+    let tilt = match turf.crater_law {
+        // θ_c = κ·15.4°·(v/18.6)·(φ/44.4°)·min(1, v_n/v_f): everything but φ first.
+        CraterLaw::Penner => {
+            let per_speed_angle = lit::<T>(
+                CRATER_REFERENCE_RAD / (CRATER_REFERENCE_SPEED_MPS * CRATER_REFERENCE_ANGLE_RAD),
+            );
+            turf.crater_scale * per_speed_angle * speed * fade * phi
+        }
+        // θ_c = κ·15.4°·(v_n v_t / v)/(18.6 · sin 44.4° cos 44.4°)·min(1, v_n/v_f).
+        CraterLaw::NormalTangential => {
+            let per_speed = lit::<T>(CRATER_REFERENCE_RAD / CRATER_REFERENCE_NORMAL_TANGENTIAL_MPS);
+            turf.crater_scale * per_speed * (vt * vn) * fade / speed
+        }
+    };
     let tilt = larger(smaller(tilt, phi), T::zero());
     let (s, c) = crate::geometry::sin_cos_small(tilt);
     let u = vt * c - vn * s;

@@ -34,7 +34,7 @@ use nalgebra::Vector3;
 #[cfg(any(not(target_os = "none"), target_abi = "eabihf"))]
 use normal::Level;
 use normal::Normal;
-pub use surface::{Surface, Turf};
+pub use surface::{CraterLaw, Surface, Turf};
 
 /// A rebound lower than this (m) ends the bouncing: the ball rolls (Penner 2002: 5 mm).
 pub const STOP_HEIGHT_M: f64 = 0.005;
@@ -412,6 +412,7 @@ mod tests {
                 crater_scale: 1.0,
                 crater_fade_mps: 6.0,
                 grass_drag_s2pm2: 0.07,
+                crater_law: CraterLaw::Penner,
             }))
             .prepare(0.021_f64)
         };
@@ -487,6 +488,46 @@ mod tests {
     #[test]
     fn crater_fade_and_grass_drag_f32() {
         crater_fade_and_grass_drag::<f32>();
+    }
+
+    /// The normal–tangential crater (issue 35) is Penner's at his reference impact
+    /// (18.6 m/s, 44.4° from the normal), close to it at a drive's 40–50°, and
+    /// flattens a grazing impact where Penner's ramps it up: a topped ball landing at 0.5°
+    /// and 45 m/s (no fade) leaves at under 1 m/s upwards, a third of Penner's or less.
+    #[test]
+    fn the_normal_tangential_crater() {
+        let bounce_with = |law: CraterLaw, speed: f64, angle_deg: f64| {
+            let turf = Turf {
+                crater_law: law,
+                crater_fade_mps: 1e-3,
+                ..Surface::<f64>::FairwayFirm.turf().unwrap()
+            };
+            let (s, c) = angle_deg.to_radians().sin_cos();
+            let v = Vector3::new(speed * c, -speed * s, 0.0);
+            bounce::rebound(
+                &v,
+                &Vector3::new(0.0, 0.0, 200.0),
+                Vector3::y(),
+                &turf,
+                0.021,
+            )
+        };
+        let both = |speed, angle| {
+            (
+                bounce_with(CraterLaw::Penner, speed, angle),
+                bounce_with(CraterLaw::NormalTangential, speed, angle),
+            )
+        };
+        let (p, n) = both(18.6, 90.0 - 44.4);
+        assert!((p.velocity_mps - n.velocity_mps).norm() < 1e-3 * p.velocity_mps.norm());
+        for angle in [40.0, 45.0, 50.0] {
+            let (p, n) = both(25.0, angle);
+            let rise = |r: &bounce::Rebound<f64>| r.velocity_mps.y.atan2(r.velocity_mps.x);
+            assert!((rise(&p) - rise(&n)).abs() < 0.15, "{angle}: {p:?} {n:?}");
+        }
+        let (p, n) = both(45.0, 0.5);
+        assert!(p.velocity_mps.y > 3.0 * n.velocity_mps.y, "{p:?} {n:?}");
+        assert!(n.velocity_mps.y < 1.0, "{n:?}");
     }
 
     /// The crater fade is the turf's: a slower fade (a larger v_f) takes the crater from a

@@ -41,11 +41,13 @@ pub const PENNER_FRICTION: f64 = 0.40;
 /// docs/ground.md; 0.0651 with the default aerodynamics `drives2026`, 0.0617 with
 /// `tour2023`, under which it was 0.063): it rolls like a stimp-11 green at putting speeds.
 pub const FAIRWAY_ROLLING_RESISTANCE: f64 = 0.065;
-/// The launch-monitor fairway (issue 35): the turf fitted to TrackMan's roll after its own
-/// landings on 3,867 single drives (`carry_lab::ground_drives`, docs/ground.md, "Issue
-/// 35"): restitution e₀, friction μ, rolling resistance ρ₀, crater scale κ, crater fade
-/// v_f (m/s), grass drag c (s²/m²).
-pub const TRACKMAN_FAIRWAY: [f64; 6] = [0.20, 0.376, 0.0796, 0.609, 2.13, 0.657];
+/// The launch-monitor fairway (issue 35): the turf with the normal–tangential crater
+/// ([`CraterLaw::NormalTangential`]) fitted to TrackMan's roll after its own landings on
+/// 3,867 single drives, by landing band and the topped drives (`carry_lab::ground_drives`,
+/// docs/ground.md, "Issue 35"): restitution e₀, friction μ, rolling resistance ρ₀, crater
+/// scale κ, crater fade v_f (m/s), grass drag c (s²/m²). Five of the six sit on the fit's
+/// physical bounds (docs/ground.md); v_f is Penner's reference normal speed.
+pub const TRACKMAN_FAIRWAY: [f64; 6] = [0.20, 0.80, 0.30, 0.841, 13.3, 0.010];
 /// Largest accepted friction coefficient, rolling resistance and crater scale.
 pub const MAX_TURF_COEFFICIENT: f64 = 10.0;
 
@@ -57,9 +59,9 @@ pub enum Surface<T: Real> {
     /// calibrated to TrackMan's 2010 driver chart).
     FairwayFirm,
     /// The fairway of a launch monitor (issue 35): the turf fitted to TrackMan's roll on
-    /// single drives, all landing angles ([`TRACKMAN_FAIRWAY`]): a softer bounce and a
-    /// shallower crater than Penner's green, a crater that fades below 2.1 m/s of normal
-    /// speed, and a grass drag nine times the putting form's.
+    /// single drives, all landing angles and the topped drives ([`TRACKMAN_FAIRWAY`]): the
+    /// normal–tangential crater ([`CraterLaw::NormalTangential`]), a softer bounce and a
+    /// grippier, slower turf than Penner's green.
     FairwayTrackman,
     /// A soft, watered fairway (stimp-5 roll, 80 % of the restitution, deeper crater).
     FairwaySoft,
@@ -94,6 +96,28 @@ pub struct Turf<T> {
     /// Grass drag `c` in `ρ(v) = ρ₀(1 + c v²)` (s²/m²), ≥ 0 ([`GRASS_DRAG_S2PM2`] is
     /// Penner's putting form).
     pub grass_drag_s2pm2: T,
+    /// How the crater's tilt depends on the impact angle ([`CraterLaw`]).
+    pub crater_law: CraterLaw,
+}
+
+/// How the crater's tilt depends on the impact (`bounce`; docs/ground.md, "The crater
+/// law"). Both equal Penner's 15.4° at his reference impact (18.6 m/s, 44.4° from the
+/// normal) and scale with the crater scale κ and the fade `min(1, v_n/v_f)`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub enum CraterLaw {
+    /// Penner (2002), linear in the angle from the normal:
+    /// `θ_c = κ·15.4°·(v/18.6 m/s)·(φ/44.4°)`. The seed's surfaces.
+    #[default]
+    Penner,
+    /// The crater as the product of the impact's normal and tangential speeds,
+    /// `θ_c = κ·15.4°·(v_n v_t / v)/(18.6 m/s · sin 44.4° cos 44.4°)`
+    /// `= κ·15.4°·(v/18.6 m/s)·(sin 2φ / sin 88.8°)`: a crater as deep as the impact's
+    /// normal speed presses in, tilted by how far the ball runs across it. Penner's law
+    /// at his reference impact, within 13 % of it at 40–50° from the normal; vanishes for a vertical impact (as
+    /// Penner's does) and for a grazing one, which barely dents the turf (where Penner's
+    /// grows with the speed and ramps a topped ball into long hops). Issue 35.
+    NormalTangential,
 }
 
 /// Largest accepted crater fade speed (m/s): a landing's normal speed is below 60 m/s.
@@ -140,6 +164,7 @@ impl<T: Real> Surface<T> {
             crater_scale: lit(kappa),
             crater_fade_mps: lit(CRATER_FADE_NORMAL_SPEED_MPS),
             grass_drag_s2pm2: lit(GRASS_DRAG_S2PM2),
+            crater_law: CraterLaw::Penner,
         };
         match *self {
             Self::FairwayFirm => Ok(penner(1.0, lit(FAIRWAY_ROLLING_RESISTANCE), 1.0)),
@@ -152,6 +177,7 @@ impl<T: Real> Surface<T> {
                     crater_scale: lit(kappa),
                     crater_fade_mps: lit(fade),
                     grass_drag_s2pm2: lit(drag),
+                    crater_law: CraterLaw::NormalTangential,
                 })
             }
             Self::FairwaySoft => Ok(penner(0.8, stimp(5.0), 1.2)),
@@ -162,6 +188,7 @@ impl<T: Real> Surface<T> {
                 crater_scale: lit(1.3),
                 crater_fade_mps: lit(CRATER_FADE_NORMAL_SPEED_MPS),
                 grass_drag_s2pm2: lit(GRASS_DRAG_S2PM2),
+                crater_law: CraterLaw::Penner,
             }),
             Self::Green { stimp_m } => {
                 let s = positive(stimp_m, Field::Stimp)?;
@@ -203,6 +230,7 @@ impl<T: Real> Turf<T> {
                 Field::CraterFade,
             )?,
             grass_drag_s2pm2: coefficient(self.grass_drag_s2pm2, Field::GrassDrag)?,
+            crater_law: self.crater_law,
         })
     }
 }

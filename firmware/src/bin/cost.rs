@@ -263,6 +263,10 @@ fn suite<T: Real>(ticks: &Ticks, k: &mut u32, p: &str) {
             label!("FULL SHOT + ground, green stimp 10 (to rest)"),
             carry_core::ground::Surface::green(),
         ),
+        (
+            label!("FULL SHOT + ground, fairway-trackman (to rest)"),
+            carry_core::ground::Surface::FairwayTrackman,
+        ),
     ] {
         let with_ground = Scene::<T> {
             ground: Some(carry_core::ground::Ground::level(surface)),
