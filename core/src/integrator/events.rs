@@ -296,7 +296,8 @@ impl<'r, 'b, T: Real> Tracker<'r, 'b, T> {
         // Most steps hold neither the apex nor the landing: `locate` would find nothing
         // (the same tests as its own), so it is not called.
         let (y0, y1) = (step.y0, step.y1);
-        if !(y0[VY] > T::zero() && y1[VY] <= T::zero()) && !(y1[Y] <= self.landing_height) {
+        let may_hold_apex = y0[VY] > T::zero() && y1[VY] <= T::zero();
+        if !(may_hold_apex || y1[Y] <= self.landing_height) {
             if self.recorder.is_some() {
                 self.record(t0, step, None);
             }
