@@ -60,6 +60,16 @@ pub(crate) trait Rhs<T: Real> {
     /// Evaluates the derivative.
     fn eval(&self, y: &State<T>) -> State<T>;
 
+    /// [`Rhs::eval`] inlined into its caller, for the adaptive integrator's stages where
+    /// the precision is in hardware (hosts; `f32` on hard-float ARM): there a call costs
+    /// ≈ 40 instructions per evaluation (the state through memory, the callee's saved
+    /// registers), a third of the force model itself (docs/performance.md). Elsewhere
+    /// (software floating point) the same as [`Rhs::eval`].
+    #[inline(always)]
+    fn eval_inlined(&self, y: &State<T>) -> State<T> {
+        self.eval(y)
+    }
+
     /// Whether a fixed step of `h` seconds from `y0` to `y1` grew no faster than the exact
     /// dynamics can. Drag only slows the ball in the air's frame and lift is normal to
     /// it, so the air speed `V = |v − w(y)|` grows by at most `d = g·h + |w(y₁) − w(y₀)|`
@@ -282,6 +292,13 @@ impl<T: Real> Rhs<T> for Dynamics<'_, T> {
     #[cfg_attr(not(target_os = "none"), inline(always))]
     #[cfg_attr(target_os = "none", inline(never))]
     fn eval(&self, y: &State<T>) -> State<T> {
+        let e = &self.field.effects;
+        let wind = self.field.has_wind();
+        self.eval_switched(y, e.drag, e.lift, e.spin_decay, wind)
+    }
+
+    #[inline(always)]
+    fn eval_inlined(&self, y: &State<T>) -> State<T> {
         let e = &self.field.effects;
         let wind = self.field.has_wind();
         self.eval_switched(y, e.drag, e.lift, e.spin_decay, wind)

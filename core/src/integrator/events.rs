@@ -17,7 +17,7 @@
 
 use crate::aero::{S, State, VY, Y};
 use crate::error::{Error, Result};
-use crate::real::{Real, larger, lit, smaller, to_f64};
+use crate::real::{Real, larger, lit, to_f64};
 use crate::trajectory::{Plane, Recorder, Sample};
 use nalgebra::Vector3;
 
@@ -156,7 +156,10 @@ pub(crate) fn find_root<T: Real>(
         (a + b) * half
     };
     for _ in 0..64 {
-        if !(x > smaller(a, b) && x < larger(a, b)) {
+        // The ends are never NaN (given finite, then only moved to an `x` that passed this
+        // test): one comparison orders them, where `smaller`/`larger` also handle NaN.
+        let (lo, hi) = if a < b { (a, b) } else { (b, a) };
+        if !(x > lo && x < hi) {
             x = (a + b) * half;
         }
         let (fx, slope) = f(x);
@@ -173,11 +176,8 @@ pub(crate) fn find_root<T: Real>(
         let next = x - step;
         // (A NaN step, from a zero slope, fails the bracket test and bisects.)
         if step.abs() <= tiny || (b - a).abs() <= tiny {
-            return if next > smaller(a, b) && next < larger(a, b) {
-                next
-            } else {
-                x
-            };
+            let (lo, hi) = if a < b { (a, b) } else { (b, a) };
+            return if next > lo && next < hi { next } else { x };
         }
         x = next;
     }
@@ -292,6 +292,16 @@ impl<'r, 'b, T: Real> Tracker<'r, 'b, T> {
                 self.record(t0, step, landing);
             }
             return Ok(landing);
+        }
+        // Most steps hold neither the apex nor the landing: `locate` would find nothing
+        // (the same tests as its own), so it is not called.
+        let (y0, y1) = (step.y0, step.y1);
+        let may_hold_apex = y0[VY] > T::zero() && y1[VY] <= T::zero();
+        if !(may_hold_apex || y1[Y] <= self.landing_height) {
+            if self.recorder.is_some() {
+                self.record(t0, step, None);
+            }
+            return Ok(None);
         }
         let (apex, landing) = self.locate(step);
         if let Some((th, ya)) = apex {
