@@ -37,7 +37,8 @@
 //! # Ok::<(), carry_core::Error>(())
 //! ```
 
-mod kernel;
+#[doc(hidden)]
+pub mod kernel;
 
 use crate::aero::model::Forces;
 use crate::aero::{State, VY, Y};
@@ -53,12 +54,28 @@ use crate::real::{Real, larger, length, lit, smaller};
 use crate::scene::{Effects, PreparedScene};
 use crate::trajectory::Stats;
 use crate::wind::WindField;
-use kernel::{Lanes, States};
+use kernel::{Pack, States};
 use nalgebra::Vector3;
 
-/// Shots advanced together by [`fly_each`]: 4 (one AVX2 register of `f64`; 8 measured
-/// no faster, docs/performance.md).
+/// Shots advanced together by [`fly_each`]: 4 (a `wide::f64x4`: one AVX register of
+/// `f64`, two SSE2 ones on baseline x86-64; docs/performance.md).
 pub const LANES: usize = 4;
+
+/// A precision the lanes kernel computes in, with its SIMD pack of [`LANES`] lanes
+/// (`f64`: `wide::f64x4`, `f32`: `wide::f32x4`).
+pub trait LaneReal: Real {
+    /// The pack.
+    #[doc(hidden)]
+    type Pack: Pack<Scalar = Self>;
+}
+
+impl LaneReal for f64 {
+    type Pack = wide::f64x4;
+}
+
+impl LaneReal for f32 {
+    type Pack = wide::f32x4;
+}
 
 /// One shot of a batch: the prepared scene it flies through and its launch.
 #[derive(Debug, Clone, Copy)]
@@ -86,23 +103,15 @@ fn covers_scene<T: Real>(scene: &PreparedScene<T>) -> bool {
 /// Flies every shot and hands each result to `sink` with the shot's index, in the order
 /// the flights end (not the input order). Each result is what [`PreparedScene::fly`]
 /// returns for that shot (without a recorder): an invalid shot gets its own typed error
-/// and the others fly on. [`LANES`] lanes.
-pub fn fly_each<T: Real>(
-    shots: &[Shot<'_, T>],
-    integrator: &Integrator<T>,
-    sink: impl FnMut(usize, Result<FlightOutcome<T>>),
-) {
-    fly_each_in::<T, LANES>(shots, integrator, sink);
-}
-
-/// [`fly_each`] with `N` lanes (`N = 0`: the scalar path for every shot).
-pub fn fly_each_in<T: Real, const N: usize>(
+/// and the others fly on. No allocation.
+pub fn fly_each<T: LaneReal>(
     shots: &[Shot<'_, T>],
     integrator: &Integrator<T>,
     mut sink: impl FnMut(usize, Result<FlightOutcome<T>>),
 ) {
+    const N: usize = LANES;
     let cfg = match integrator.method() {
-        Ok(Method::Adaptive(cfg)) if N > 0 => cfg,
+        Ok(Method::Adaptive(cfg)) if T::Pack::LANES == N => cfg,
         _ => {
             for (i, s) in shots.iter().enumerate() {
                 sink(i, s.scene.fly(&s.launch, integrator, None));
@@ -110,11 +119,12 @@ pub fn fly_each_in<T: Real, const N: usize>(
             return;
         }
     };
-    let mut run = Run::<T, N> {
+    let zero = T::Pack::splat(T::zero());
+    let mut run = Run::<T::Pack> {
         cfg,
         field: kernel::Field::zero(),
-        y: [[T::zero(); N]; 7],
-        k1: [[T::zero(); N]; 7],
+        y: [zero; 7],
+        k1: [zero; 7],
         next: 0,
     };
     let mut lanes: [Option<Lane<'_, T>>; N] = core::array::from_fn(|_| None);
@@ -153,13 +163,14 @@ pub fn fly_each_in<T: Real, const N: usize>(
                 }
             }
         }
-        let mut h: Lanes<T, N> = [T::one(); N];
-        for (hl, lane) in h.iter_mut().zip(lanes.iter()) {
+        let mut h = T::Pack::splat(T::one());
+        for (l, lane) in lanes.iter().enumerate() {
             if let Some(lane) = lane {
-                *hl = lane.h;
+                h.set(l, lane.h);
             }
         }
-        let st = kernel::step(&run.field, &run.y, &run.k1, &h, cfg.rtol, cfg.atol);
+        let (rtol, atol) = (T::Pack::splat(cfg.rtol), T::Pack::splat(cfg.atol));
+        let st = kernel::step(&run.field, &run.y, &run.k1, h, rtol, atol);
         for (l, slot) in lanes.iter_mut().enumerate() {
             let Some(lane) = slot else { continue };
             let done = run.advance(lane, l, &st);
@@ -172,11 +183,11 @@ pub fn fly_each_in<T: Real, const N: usize>(
 }
 
 /// The lanes' shared arrays.
-struct Run<T: Real, const N: usize> {
-    cfg: Adaptive<T>,
-    field: kernel::Field<T, N>,
-    y: States<T, N>,
-    k1: States<T, N>,
+struct Run<P: Pack> {
+    cfg: Adaptive<P::Scalar>,
+    field: kernel::Field<P>,
+    y: States<P>,
+    k1: States<P>,
     /// The next shot to start.
     next: usize,
 }
@@ -218,7 +229,7 @@ fn inv_root_3_16<T: Real>(x: T) -> T {
     T::one() / (r8 * r8.root())
 }
 
-impl<T: Real, const N: usize> Run<T, N> {
+impl<T: Real, P: Pack<Scalar = T>> Run<P> {
     /// The next shot the kernel covers into lane `l` (the others fly on the scalar path,
     /// and invalid ones get their error, on the way), or `None` when the shots are done.
     fn refill<'s>(
@@ -299,12 +310,8 @@ impl<T: Real, const N: usize> Run<T, N> {
             _ => Vector3::zeros(),
         };
         let f = &mut self.field;
-        let put = |x: &mut Lanes<T, N>, v: T| {
-            if let Some(slot) = x.get_mut(l) {
-                *slot = v;
-            }
-        };
-        put(&mut f.gravity, scene.field.gravity);
+        let put = |x: &mut P, v: T| x.set(l, v);
+        put(&mut f.minus_gravity, -scene.field.gravity);
         for k in 0..3 {
             put(&mut f.wind[k], wind[k]);
             put(&mut f.axis[k], axis[k]);
@@ -333,12 +340,12 @@ impl<T: Real, const N: usize> Run<T, N> {
         &mut self,
         lane: &mut Lane<'_, T>,
         l: usize,
-        st: &kernel::Stages<T, N>,
+        st: &kernel::Stages<P>,
     ) -> Option<Result<FlightOutcome<T>>> {
         let cfg = &self.cfg;
         let (safety, grow, shrink) = (lit::<T>(0.9), lit::<T>(5.0), lit::<T>(0.2));
         lane.stats.force_evaluations = lane.stats.force_evaluations.saturating_add(6);
-        let err = st.err.get(l).copied().unwrap_or_else(|| lit(f64::NAN));
+        let err = st.err.get(l);
         let y1 = kernel::lane(&st.y1, l);
         if err <= T::one() && y1.iter().all(|x| x.is_finite()) {
             let hl = lane.scene.landing_height;
