@@ -1,6 +1,6 @@
 //! The lanes kernel (issue 37) beside the scalar path: the same 256 launches (wedges to
 //! drivers, hooks and slices, in still air and in a uniform wind) flown one by one with
-//! `PreparedScene::fly` and through `lanes::fly_each_in` with 4 and 8 lanes, one thread.
+//! `PreparedScene::fly` and through `lanes::fly_each` (4 lanes), one thread.
 //! Throughput is per shot.
 //!
 //! `cargo bench -p carry-core --bench lanes`; figures in docs/performance.md ("Lanes kernel").
@@ -70,21 +70,10 @@ fn bench(c: &mut Criterion) {
                 carry
             })
         });
-        g.bench_function("lanes4", |b| {
+        g.bench_function("lanes", |b| {
             b.iter(|| {
                 let mut carry = 0.0;
-                lanes::fly_each_in::<f64, 4>(black_box(&shots), &integrator, |_, r| {
-                    if let Ok(o) = r {
-                        carry += o.carry_m;
-                    }
-                });
-                carry
-            })
-        });
-        g.bench_function("lanes8", |b| {
-            b.iter(|| {
-                let mut carry = 0.0;
-                lanes::fly_each_in::<f64, 8>(black_box(&shots), &integrator, |_, r| {
+                lanes::fly_each(black_box(&shots), &integrator, |_, r| {
                     if let Ok(o) = r {
                         carry += o.carry_m;
                     }
