@@ -55,6 +55,7 @@ pub mod air;
 pub mod flight;
 pub mod ground;
 pub mod integrator;
+pub mod lanes;
 pub mod scene;
 pub mod trajectory;
 pub mod wind;

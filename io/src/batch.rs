@@ -263,19 +263,45 @@ fn put_u64(out: &mut Vec<u8>, n: u64) {
     let _ = write!(out, "{n}");
 }
 
-/// Formats one output row into `out`; true for an error row.
+/// Computes a piece of records: their rows parsed, then run together
+/// ([`compute::run_rows`]: the flights in the core's lanes kernel where it covers them).
+fn compute_piece(
+    job: &Job,
+    cols: &Columns,
+    piece: &[ByteRecord],
+) -> Vec<Result<report::Report, InputError>> {
+    let parsed: Vec<Result<Params, InputError>> = piece
+        .iter()
+        .map(|rec| cols.apply(rec, &job.base, job.units))
+        .collect();
+    let rows: Vec<Params> = parsed
+        .iter()
+        .filter_map(|p| p.as_ref().ok().copied())
+        .collect();
+    let mut reports = compute::run_rows(job.mode, &rows, &job.numerics).into_iter();
+    parsed
+        .into_iter()
+        .map(|p| {
+            p.and_then(|_| {
+                reports
+                    .next()
+                    .unwrap_or_else(|| Err(InputError::new("input", "row not computed")))
+            })
+        })
+        .collect()
+}
+
+/// Formats one output row into `out` given its result; true for an error row.
 fn process(
     job: &Job,
     cols: &Columns,
     rec: &ByteRecord,
+    result: Result<report::Report, InputError>,
     floats: &mut Floats,
     out: &mut Vec<u8>,
 ) -> bool {
     let line = line_of(rec);
     let label = cols.label.and_then(|i| rec.get(i));
-    let result = cols
-        .apply(rec, &job.base, job.units)
-        .and_then(|p| compute::run(job.mode, &p, &job.numerics));
     let failed = result.is_err();
     if job.json {
         out.extend_from_slice(b"{\"line\":");
@@ -491,8 +517,8 @@ fn stream<R: Read, W: Write>(
                 buf.clear();
                 let mut floats = Floats::default();
                 let mut failed = 0;
-                for rec in piece {
-                    failed += u64::from(process(job, cols, rec, &mut floats, buf));
+                for (rec, result) in piece.iter().zip(compute_piece(job, cols, piece)) {
+                    failed += u64::from(process(job, cols, rec, result, &mut floats, buf));
                 }
                 failed
             })

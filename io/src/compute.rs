@@ -8,6 +8,7 @@ use crate::report::{
 };
 use carry_core::flight::{Integrator, Recorder, Sample};
 use carry_core::impact::{self, Solver};
+use carry_core::lanes::{self, LaneReal, Shot};
 use carry_core::real::{lit, to_f64};
 use carry_core::units::{deg, rpm, to_deg, to_rpm};
 use carry_core::{
@@ -493,6 +494,150 @@ pub fn run_in_scene<T: Real>(
         club_after,
         impulse_ns: impulse,
         flight,
+    })
+}
+
+/// Runs `mode` on every row of `rows` in precision `T`: as [`run_in`] row by row, with the
+/// flights flown by the core's lanes kernel ([`carry_core::lanes`], issue 37) where it
+/// covers the row's scene and the integrator (the modern aerodynamic family with every
+/// effect, still air or a uniform wind, no ground, `dp45`), and by the scalar path
+/// otherwise. The results are the row-by-row ones (bit for bit; `io/tests` checks it).
+/// A row's scene is prepared once for a run of rows with the same scene and ball.
+#[must_use]
+pub fn run_rows_in<T: LaneReal>(
+    mode: Mode,
+    rows: &[Params],
+    n: &Numerics,
+) -> Vec<Result<Report, InputError>> {
+    if mode == Mode::Impact {
+        return rows.iter().map(|p| run_in::<T>(mode, p, n, None)).collect();
+    }
+    // The scenes (one per run of rows sharing scene and ball), and each row's launch.
+    let mut scenes: Vec<PreparedScene<T>> = Vec::new();
+    let mut starts: Vec<Result<Start<T>, InputError>> = Vec::with_capacity(rows.len());
+    let mut last: Option<&Params> = None;
+    for p in rows {
+        let same = last.is_some_and(|q| {
+            q.scene == p.scene
+                && q.ball_mass_kg == p.ball_mass_kg
+                && q.ball_radius_m == p.ball_radius_m
+        }) && !scenes.is_empty();
+        let start = (|| {
+            let ball = ball::<T>(p)?;
+            let (motion, launch, club_after, impulse) = launch_of::<T>(mode, p, n, &ball)?;
+            if !same {
+                scenes.push(crate::scene::build::<T>(&p.scene)?.prepare(&ball)?);
+                last = Some(p);
+            }
+            Ok(Start {
+                scene: scenes.len() - 1,
+                motion,
+                report: Report {
+                    launch,
+                    club_after,
+                    impulse_ns: impulse,
+                    flight: None,
+                },
+            })
+        })();
+        starts.push(start);
+    }
+    let mut index = Vec::with_capacity(rows.len());
+    let mut shots = Vec::with_capacity(rows.len());
+    for (i, s) in starts.iter().enumerate() {
+        if let Ok(s) = s {
+            index.push(i);
+            shots.push(Shot {
+                scene: &scenes[s.scene],
+                launch: s.motion,
+            });
+        }
+    }
+    let integrator = n.integrator::<T>();
+    let mut flights: Vec<Option<Result<FlightReport, InputError>>> = vec![None; shots.len()];
+    lanes::fly_each(&shots, &integrator, |k, out| {
+        let shot = &shots[k];
+        flights[k] = Some(
+            out.map(|o| flight_report(&o))
+                .map_err(|e| into_the_ground(e, &shot.launch, shot.scene)),
+        );
+    });
+    let mut flights = index.into_iter().zip(flights);
+    let mut next = flights.next();
+    starts
+        .into_iter()
+        .enumerate()
+        .map(|(i, s)| {
+            let mut s = s?;
+            let flight = match next.take() {
+                Some((j, f)) if j == i => {
+                    next = flights.next();
+                    f
+                }
+                other => {
+                    next = other;
+                    None
+                }
+            };
+            s.report.flight =
+                Some(flight.unwrap_or_else(|| Err(InputError::new("flight", "not flown")))?);
+            Ok(s.report)
+        })
+        .collect()
+}
+
+/// As [`run_rows_in`], in the precision `n` asks for.
+#[must_use]
+pub fn run_rows(mode: Mode, rows: &[Params], n: &Numerics) -> Vec<Result<Report, InputError>> {
+    match n.precision {
+        Precision::F32 => run_rows_in::<f32>(mode, rows, n),
+        Precision::F64 => run_rows_in::<f64>(mode, rows, n),
+    }
+}
+
+/// A row of [`run_rows_in`] ready to fly: its scene (an index), launch and report so far.
+struct Start<T: Real> {
+    scene: usize,
+    motion: BallMotion<T>,
+    report: Report,
+}
+
+/// The launch of `p` (flight mode) or its impact's (shot mode), with the launch report,
+/// the club after impact and the impulse.
+#[allow(clippy::type_complexity)]
+fn launch_of<T: Real>(
+    mode: Mode,
+    p: &Params,
+    n: &Numerics,
+    ball: &Ball<T>,
+) -> Result<
+    (
+        BallMotion<T>,
+        LaunchReport,
+        Option<ClubAfter>,
+        Option<[f64; 3]>,
+    ),
+    InputError,
+> {
+    Ok(match mode {
+        Mode::Impact | Mode::Shot => {
+            let out = solve_impact::<T>(p, n, ball)?;
+            let launch = launch_report(&out.launch, &out.ball, true);
+            let club_after = ClubAfter {
+                velocity_mps: f3(&out.club.velocity_mps),
+                spin_radps: f3(&out.club.spin_radps),
+            };
+            (
+                out.ball,
+                launch,
+                Some(club_after),
+                Some(f3(&out.impulse_ns)),
+            )
+        }
+        Mode::Flight => {
+            let (motion, launch) = launch_motion::<T>(p)?;
+            (motion, launch, None, None)
+        }
     })
 }
 

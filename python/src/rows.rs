@@ -1,12 +1,11 @@
 //! The rows of one call, computed in parallel (rayon, all cores) into columns.
 
 use crate::args::{Request, check_value};
-use carry_core::{PreparedScene, Real};
-use carry_io::compute::{self, Mode, Precision};
+use carry_core::lanes::LaneReal;
+use carry_io::compute::{self, Precision};
 use carry_io::error::InputError;
-use carry_io::params::{Key, Params};
+use carry_io::params::Params;
 use carry_io::report::{csv_columns, csv_values};
-use carry_io::scene::SCENE_KEYS;
 use rayon::prelude::*;
 
 /// Rows per parallel work item.
@@ -35,21 +34,34 @@ fn params(req: &Request, columns: &[&[f64]], i: usize) -> Result<Params, InputEr
 }
 
 /// Computes the rows from `first` into `out` (row-major, `width` values a row) in
-/// precision `T`, flying through `scene` if given; returns the failed rows.
-fn block<T: Real>(
+/// precision `T`; returns the failed rows.
+fn block<T: LaneReal>(
     req: &Request,
     columns: &[&[f64]],
-    scene: Option<&PreparedScene<T>>,
     first: usize,
     out: &mut [f64],
     width: usize,
 ) -> Vec<(usize, String)> {
     let mut failed = Vec::new();
     let mut row = Vec::with_capacity(width);
-    for (k, slot) in out.chunks_exact_mut(width).enumerate() {
+    let rows = out.len() / width.max(1);
+    // The block's rows together: the flights in the core's lanes kernel where it covers
+    // them (issue 37); a row whose scene cannot be shared is prepared on its own.
+    let parsed: Vec<Result<Params, InputError>> = (first..first + rows)
+        .map(|i| params(req, columns, i))
+        .collect();
+    let good: Vec<Params> = parsed
+        .iter()
+        .filter_map(|p| p.as_ref().ok().copied())
+        .collect();
+    let mut reports = compute::run_rows_in::<T>(req.mode, &good, &req.numerics).into_iter();
+    for (k, (slot, p)) in out.chunks_exact_mut(width).zip(parsed).enumerate() {
         let i = first + k;
-        let result = params(req, columns, i)
-            .and_then(|p| compute::run_in_scene::<T>(req.mode, &p, &req.numerics, scene, None));
+        let result = p.and_then(|_| {
+            reports
+                .next()
+                .unwrap_or_else(|| Err(InputError::new("input", "row not computed")))
+        });
         match result {
             Ok(r) => {
                 row.clear();
@@ -65,16 +77,6 @@ fn block<T: Real>(
     failed
 }
 
-/// Whether every row flies through the same scene with the same ball: then the scene is
-/// prepared once for the call instead of once a row.
-fn shared_scene(req: &Request) -> bool {
-    req.mode != Mode::Impact
-        && !req
-            .keys
-            .iter()
-            .any(|k| SCENE_KEYS.contains(k) || matches!(k, Key::BallMass | Key::BallRadius))
-}
-
 /// Runs `req` over `rows` rows; `columns[j]` holds the values of `req.keys[j]`, each of
 /// length `rows`. Blocks of rows run in parallel, each writing its part of the output.
 #[must_use]
@@ -85,18 +87,14 @@ pub fn run(req: &Request, columns: &[&[f64]], rows: usize) -> Output {
     }
 }
 
-fn run_in<T: Real>(req: &Request, columns: &[&[f64]], rows: usize) -> Output {
+fn run_in<T: LaneReal>(req: &Request, columns: &[&[f64]], rows: usize) -> Output {
     let names = csv_columns(req.mode, req.ground);
     let width = names.len();
-    // A scene that fails to prepare is left to each row, which reports it in order.
-    let scene = shared_scene(req)
-        .then(|| compute::prepared_scene::<T>(&req.base).ok())
-        .flatten();
     let mut data = vec![0.0; rows * width];
     let failed = data
         .par_chunks_mut(BLOCK * width)
         .enumerate()
-        .flat_map_iter(|(b, out)| block(req, columns, scene.as_ref(), b * BLOCK, out, width))
+        .flat_map_iter(|(b, out)| block::<T>(req, columns, b * BLOCK, out, width))
         .collect();
     Output {
         names,

@@ -206,9 +206,9 @@ pub(crate) enum Forces<T> {
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub(crate) struct Crisis<T> {
     /// `Δ = A·(c_d,sub − c_d,super)` (1/m).
-    below: T,
+    pub(crate) below: T,
     /// `k⁶ = (ρD/(μ·Re_c))⁶` (s⁶/m⁶).
-    per_speed_6: T,
+    pub(crate) per_speed_6: T,
 }
 
 impl<T: Real> Crisis<T> {

@@ -26,7 +26,7 @@ use crate::real::{Real, lit};
 /// `κ·(α₁ + α₃u²) + V·(α₀ + u²·(α₂ + α₄u²))`: coefficients `[α₀, α₁, α₂, α₃, α₄]`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
-pub(crate) struct Poly<T>([T; 5]);
+pub(crate) struct Poly<T>(pub(crate) [T; 5]);
 
 impl<T: Real> Poly<T> {
     /// `(P, Q)` with the law `= P + Q·V`, at `κ` and `u²`.
@@ -49,8 +49,8 @@ impl<T: Real> Poly<T> {
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub(crate) struct Piece<T> {
-    lift: Poly<T>,
-    drag: Poly<T>,
+    pub(crate) lift: Poly<T>,
+    pub(crate) drag: Poly<T>,
 }
 
 /// The spin laws `A·C_L(S)·V` and `A·C_D,spin(S)·V` (1/s) of the modern family, piecewise.
@@ -58,17 +58,17 @@ pub(crate) struct Piece<T> {
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub(crate) struct SpinLaws<T> {
     /// `R/S_first` (m): `κ = per_spin·s`, `y = κ/V`.
-    per_spin: T,
+    pub(crate) per_spin: T,
     /// `ρ_second = S_first/S_second` and its square.
-    second: T,
-    second_sq: T,
+    pub(crate) second: T,
+    pub(crate) second_sq: T,
     /// Both rising (`y < 1`).
-    rising: Piece<T>,
+    pub(crate) rising: Piece<T>,
     /// The first saturated (`y ≥ 1 > x`), in `x = ρ_second·y` and `κ·ρ_second`.
-    second_rising: Piece<T>,
+    pub(crate) second_rising: Piece<T>,
     /// Both saturated: `α₀` of the lift and of the drag.
-    lift_saturated: T,
-    drag_saturated: T,
+    pub(crate) lift_saturated: T,
+    pub(crate) drag_saturated: T,
 }
 
 /// A component `(lift amplitude, drag amplitude, S_c)`: `a_L·sat(S/S_c)`, `a_D·sat(S/S_c)`.

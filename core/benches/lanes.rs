@@ -1,0 +1,89 @@
+//! The lanes kernel (issue 37) beside the scalar path: the same 256 launches (wedges to
+//! drivers, hooks and slices, in still air and in a uniform wind) flown one by one with
+//! `PreparedScene::fly` and through `lanes::fly_each` (4 lanes), one thread.
+//! Throughput is per shot.
+//!
+//! `cargo bench -p carry-core --bench lanes`; figures in docs/performance.md ("Lanes kernel").
+use carry_core::lanes::{self, Shot};
+use carry_core::units::{deg, rpm};
+use carry_core::{Ball, Integrator, Launch, PreparedScene, Scene, Wind};
+use criterion::{Criterion, Throughput, criterion_group, criterion_main};
+use nalgebra::Vector3;
+use std::hint::black_box;
+use std::time::Duration;
+
+const SHOTS: usize = 256;
+
+/// A fixed spread of launches (a linear congruential stream, so every run flies the same).
+fn launches(scene: &PreparedScene<f64>) -> Vec<Shot<'_, f64>> {
+    let mut state: u64 = 0x2545_F491_4F6C_DD1D;
+    let mut next = |lo: f64, hi: f64| {
+        state = state
+            .wrapping_mul(6_364_136_223_846_793_005)
+            .wrapping_add(1_442_695_040_888_963_407);
+        lo + (hi - lo) * ((state >> 11) as f64 / (1u64 << 53) as f64)
+    };
+    (0..SHOTS)
+        .filter_map(|_| {
+            Launch {
+                ball_speed_mps: next(40.0, 80.0),
+                launch_angle_rad: deg(next(9.0, 30.0)),
+                launch_direction_rad: deg(next(-4.0, 4.0)),
+                backspin_radps: rpm(next(2000.0, 9500.0)),
+                sidespin_radps: rpm(next(-1200.0, 1200.0)),
+            }
+            .ball_motion()
+            .ok()
+            .map(|launch| Shot { scene, launch })
+        })
+        .collect()
+}
+
+fn bench(c: &mut Criterion) {
+    let ball = Ball::standard();
+    let integrator = Integrator::<f64>::default();
+    for (name, wind) in [
+        ("still", Wind::None),
+        ("wind", Wind::Uniform(Vector3::new(-5.0, 0.0, 3.0))),
+    ] {
+        let Ok(scene) = Scene::<f64> {
+            wind,
+            ..Scene::default()
+        }
+        .prepare(&ball) else {
+            return;
+        };
+        let shots = launches(&scene);
+        let mut g = c.benchmark_group(format!("lanes/{name}"));
+        g.sample_size(30)
+            .warm_up_time(Duration::from_millis(500))
+            .measurement_time(Duration::from_secs(3))
+            .throughput(Throughput::Elements(shots.len() as u64));
+        g.bench_function("scalar", |b| {
+            b.iter(|| {
+                let mut carry = 0.0;
+                for s in black_box(&shots) {
+                    if let Ok(o) = s.scene.fly(&s.launch, &integrator, None) {
+                        carry += o.carry_m;
+                    }
+                }
+                carry
+            })
+        });
+        g.bench_function("lanes", |b| {
+            b.iter(|| {
+                let mut carry = 0.0;
+                lanes::fly_each(black_box(&shots), &integrator, |_, r| {
+                    if let Ok(o) = r {
+                        carry += o.carry_m;
+                    }
+                });
+                carry
+            })
+        });
+        g.finish();
+    }
+}
+
+criterion_group!(benches, bench);
+criterion_main!(benches);

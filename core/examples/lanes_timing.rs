@@ -1,0 +1,81 @@
+//! Quick timing of the lanes kernel against the scalar path (medians of repeated runs over
+//! 1,024 launches, one thread): `cargo run --release -p carry-core --example lanes_timing`.
+//! The criterion bench (`--bench lanes`) is the reference; this is for profiling.
+use carry_core::lanes::{self, Shot};
+use carry_core::units::{deg, rpm};
+use carry_core::{Ball, Integrator, Launch, Scene};
+use std::time::Instant;
+
+fn main() {
+    let Ok(scene) = Scene::<f64>::default().prepare(&Ball::standard()) else {
+        return;
+    };
+    let mut state: u64 = 0x2545_F491_4F6C_DD1D;
+    let mut next = |lo: f64, hi: f64| {
+        state = state
+            .wrapping_mul(6_364_136_223_846_793_005)
+            .wrapping_add(1_442_695_040_888_963_407);
+        lo + (hi - lo) * ((state >> 11) as f64 / (1u64 << 53) as f64)
+    };
+    let shots: Vec<Shot<'_, f64>> = (0..1024)
+        .filter_map(|_| {
+            Launch {
+                ball_speed_mps: next(40.0, 80.0),
+                launch_angle_rad: deg(next(9.0, 30.0)),
+                launch_direction_rad: deg(next(-4.0, 4.0)),
+                backspin_radps: rpm(next(2000.0, 9500.0)),
+                sidespin_radps: rpm(next(-1200.0, 1200.0)),
+            }
+            .ball_motion()
+            .ok()
+            .map(|launch| Shot {
+                scene: &scene,
+                launch,
+            })
+        })
+        .collect();
+    let integrator = Integrator::default();
+    let (mut evals, mut steps, mut n) = (0u64, 0u64, 0u64);
+    for s in &shots {
+        if let Ok(o) = s.scene.fly(&s.launch, &integrator, None) {
+            evals += u64::from(o.stats.force_evaluations);
+            steps += u64::from(o.stats.steps + o.stats.rejected_steps);
+            n += 1;
+        }
+    }
+    println!(
+        "mean per flight: {:.1} force evaluations, {:.1} steps",
+        evals as f64 / n as f64,
+        steps as f64 / n as f64
+    );
+    let only = std::env::args().nth(1);
+    let runs = 15;
+    let time = |name: &str, f: &dyn Fn() -> f64| {
+        if only.as_deref().is_some_and(|o| o != name) {
+            return;
+        }
+        let mut t: Vec<f64> = (0..runs)
+            .map(|_| {
+                let s = Instant::now();
+                std::hint::black_box(f());
+                s.elapsed().as_secs_f64() / shots.len() as f64 * 1e6
+            })
+            .collect();
+        t.sort_by(f64::total_cmp);
+        println!("{name}: median {:.3} us/shot", t[runs / 2]);
+    };
+    time("scalar", &|| {
+        shots
+            .iter()
+            .filter_map(|s| s.scene.fly(&s.launch, &integrator, None).ok())
+            .map(|o| o.carry_m)
+            .sum()
+    });
+    time("lanes", &|| {
+        let mut c = 0.0;
+        lanes::fly_each(&shots, &integrator, |_, r| {
+            c += r.map_or(0.0, |o| o.carry_m)
+        });
+        c
+    });
+}

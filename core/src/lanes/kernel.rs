@@ -1,0 +1,349 @@
+//! The lanes kernel's arithmetic: [`LANES`](super::LANES) shots' states as a structure of
+//! SIMD packs (component `i` of every lane in `y[i]`), the modern family's force evaluation
+//! across the lanes, and one Dormand–Prince 5(4) step of every lane, each with its own step
+//! size.
+//!
+//! Every lane runs the very operations of the scalar path ([`crate::aero::Dynamics`],
+//! `integrator::integrate::dormand_prince`) in the same order, on `wide`'s packs
+//! (`f64x4`, `f32x4`: `mulpd`, `divpd`, `sqrtpd`, compares and blends on x86-64; plain
+//! arrays and a correctly rounded software square root where a target has no SIMD unit).
+//! The spin laws' piece is a blend, not a branch. IEEE 754 arithmetic is the same packed or
+//! scalar (and Rust never fuses a multiply and an add on its own), so a lane's numbers are
+//! the scalar path's bit for bit. Negation flips the sign bit (`wide`'s `-x` is `0 − x`,
+//! which loses the sign of a zero).
+
+use crate::real::{Real, lit};
+use core::ops::{Add, BitAnd, BitOr, BitXor, Div, Mul, Not, Sub};
+
+/// A pack of lanes of one scalar: what the kernel needs of a SIMD type.
+pub trait Pack:
+    Copy
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Mul<Output = Self>
+    + Div<Output = Self>
+    + BitAnd<Output = Self>
+    + BitOr<Output = Self>
+    + BitXor<Output = Self>
+    + Not<Output = Self>
+{
+    /// The scalar of a lane.
+    type Scalar: Real;
+    /// Lanes in a pack.
+    const LANES: usize;
+    /// Every lane `x`.
+    fn splat(x: Self::Scalar) -> Self;
+    /// Lane `l` (zero out of range).
+    fn get(&self, l: usize) -> Self::Scalar;
+    /// Sets lane `l` (nothing out of range).
+    fn set(&mut self, l: usize, x: Self::Scalar);
+    /// The correctly rounded square root of each lane.
+    #[must_use]
+    fn sqrt(self) -> Self;
+    /// `|x|` of each lane.
+    #[must_use]
+    fn abs(self) -> Self;
+    /// Lane masks of `self < o`, `self <= o`, `self != o`.
+    #[must_use]
+    fn lt(self, o: Self) -> Self;
+    /// See [`Pack::lt`].
+    #[must_use]
+    fn le(self, o: Self) -> Self;
+    /// See [`Pack::lt`].
+    #[must_use]
+    fn ne(self, o: Self) -> Self;
+    /// `t` where the mask `self` is set, else `f`.
+    #[must_use]
+    fn blend(self, t: Self, f: Self) -> Self;
+}
+
+macro_rules! pack {
+    ($pack:ty, $scalar:ty, $n:literal) => {
+        impl Pack for $pack {
+            type Scalar = $scalar;
+            const LANES: usize = $n;
+            #[inline(always)]
+            fn splat(x: $scalar) -> Self {
+                <$pack>::splat(x)
+            }
+            #[inline(always)]
+            fn get(&self, l: usize) -> $scalar {
+                self.as_array_ref().get(l).copied().unwrap_or(0.0)
+            }
+            #[inline(always)]
+            fn set(&mut self, l: usize, x: $scalar) {
+                if let Some(slot) = self.as_array_mut().get_mut(l) {
+                    *slot = x;
+                }
+            }
+            #[inline(always)]
+            fn sqrt(self) -> Self {
+                <$pack>::sqrt(self)
+            }
+            #[inline(always)]
+            fn abs(self) -> Self {
+                <$pack>::abs(self)
+            }
+            #[inline(always)]
+            fn lt(self, o: Self) -> Self {
+                wide::CmpLt::cmp_lt(self, o)
+            }
+            #[inline(always)]
+            fn le(self, o: Self) -> Self {
+                wide::CmpLe::cmp_le(self, o)
+            }
+            #[inline(always)]
+            fn ne(self, o: Self) -> Self {
+                wide::CmpNe::cmp_ne(self, o)
+            }
+            #[inline(always)]
+            fn blend(self, t: Self, f: Self) -> Self {
+                <$pack>::blend(self, t, f)
+            }
+        }
+    };
+}
+pack!(wide::f64x4, f64, 4);
+pack!(wide::f32x4, f32, 4);
+
+/// `-x` of each lane: the sign bit flipped.
+#[inline(always)]
+fn neg<P: Pack>(x: P) -> P {
+    x ^ P::splat(lit(-0.0))
+}
+
+/// The 7-component state (position, velocity, spin magnitude) of every lane.
+pub(crate) type States<P> = [P; 7];
+
+/// Lane `l` of `x` as one state.
+#[inline(always)]
+pub(crate) fn lane<P: Pack>(x: &States<P>, l: usize) -> [P::Scalar; 7] {
+    core::array::from_fn(|i| x[i].get(l))
+}
+
+/// Writes the state `v` into lane `l` of `x`.
+#[inline(always)]
+pub(crate) fn set_lane<P: Pack>(x: &mut States<P>, l: usize, v: &[P::Scalar; 7]) {
+    for (xi, vi) in x.iter_mut().zip(v.iter()) {
+        xi.set(l, *vi);
+    }
+}
+
+/// Every lane's force field, in the modern family's per-unit-mass form
+/// (`aero::model::Forces::Modern`).
+#[derive(Clone, Copy)]
+pub(crate) struct Field<P> {
+    /// `−g` (m/s²).
+    pub(crate) minus_gravity: P,
+    /// Uniform wind (m/s, G; zero in still air).
+    pub(crate) wind: [P; 3],
+    /// Spin axis ω̂ (zero without spin).
+    pub(crate) axis: [P; 3],
+    /// Spin decay `λ` (1/m).
+    pub(crate) decay: P,
+    /// `A·c_d,super` (1/m).
+    pub(crate) drag_v: P,
+    /// The crisis `Δ` and `k⁶`.
+    pub(crate) crisis_below: P,
+    pub(crate) crisis_k6: P,
+    /// The spin laws: `R/S_first`, `ρ_second`, `ρ_second²`.
+    pub(crate) per_spin: P,
+    pub(crate) second: P,
+    pub(crate) second_sq: P,
+    /// Polynomial coefficients `[α₀..α₄]` of the lift and the spin drag on the rising piece
+    /// and on the second piece, and `α₀` past both saturations.
+    pub(crate) rising_lift: [P; 5],
+    pub(crate) rising_drag: [P; 5],
+    pub(crate) second_lift: [P; 5],
+    pub(crate) second_drag: [P; 5],
+    pub(crate) saturated_lift: P,
+    pub(crate) saturated_drag: P,
+}
+
+impl<P: Pack> Field<P> {
+    /// A field whose every lane is zero (filled lane by lane).
+    pub(crate) fn zero() -> Self {
+        let z = P::splat(lit(0.0));
+        Self {
+            minus_gravity: z,
+            wind: [z; 3],
+            axis: [z; 3],
+            decay: z,
+            drag_v: z,
+            crisis_below: z,
+            crisis_k6: z,
+            per_spin: z,
+            second: z,
+            second_sq: z,
+            rising_lift: [z; 5],
+            rising_drag: [z; 5],
+            second_lift: [z; 5],
+            second_drag: [z; 5],
+            saturated_lift: z,
+            saturated_drag: z,
+        }
+    }
+}
+
+/// `dy/dt` of every lane: the modern family with drag, lift and spin decay in still air or
+/// a uniform wind, as `Dynamics::forces_switched` computes it:
+///
+/// ```text
+/// v_r = v − w,  V² = v_r·v_r,  V = √V²,  κ = (R/S_first)·s,  y² = κ²/V²
+/// (P, Q) = piece(y²): κ'·(α₁ + α₃u²), α₀ + u²·(α₂ + α₄u²)
+/// k_d = (P_D + A·c_d,super·V) + (Q_D·V + Δ/(1 + V⁴·(V²k⁶))·V),   k_l = P_L + Q_L·V
+/// a = (0, −g, 0) − k_d·v_r + k_l·(ω̂ × v_r),   ds/dt = −(λV)·s
+/// ```
+#[inline(always)]
+pub(crate) fn eval<P: Pack>(f: &Field<P>, y: &States<P>) -> States<P> {
+    let zero = P::splat(lit(0.0));
+    let one = P::splat(lit(1.0));
+    let (vx, vy, vz, s) = (y[3], y[4], y[5], y[6]);
+    let rx = vx - f.wind[0];
+    let ry = vy - f.wind[1];
+    let rz = vz - f.wind[2];
+    let speed_sq = (rx * rx + ry * ry) + rz * rz;
+    let speed = speed_sq.sqrt();
+    // The spin laws' piece (`SpinLaws::piece`), blended rather than branched on: past both
+    // saturations the laws are (0, α₀).
+    let kappa = f.per_spin * s;
+    let y_sq = (kappa * kappa) / speed_sq;
+    let x_sq = f.second_sq * y_sq;
+    let rising = y_sq.lt(one);
+    let second = !rising & x_sq.lt(one);
+    // Both pieces' laws, then the lane's piece's results blended in (4 blends a piece).
+    let law = |a: &[P; 5], k: P, u: P| (k * (a[1] + a[3] * u), a[0] + u * (a[2] + a[4] * u));
+    let k2 = f.second * kappa;
+    let (rl, rd) = (
+        law(&f.rising_lift, kappa, y_sq),
+        law(&f.rising_drag, kappa, y_sq),
+    );
+    let (ql, qd) = (law(&f.second_lift, k2, x_sq), law(&f.second_drag, k2, x_sq));
+    let pick = |r: P, q: P, past: P| rising.blend(r, second.blend(q, past));
+    let (lift_0, lift_1) = (pick(rl.0, ql.0, zero), pick(rl.1, ql.1, f.saturated_lift));
+    let (drag_0, drag_1) = (pick(rd.0, qd.0, zero), pick(rd.1, qd.1, f.saturated_drag));
+    let crisis = f.crisis_below / (one + (speed_sq * speed_sq) * (speed_sq * f.crisis_k6));
+    let kd = (drag_0 + f.drag_v * speed) + (drag_1 * speed + crisis * speed);
+    let kl = lift_0 + lift_1 * speed;
+    let [ax, ay, az] = f.axis;
+    let (cx, cy, cz) = (ay * rz - az * ry, az * rx - ax * rz, ax * ry - ay * rx);
+    [
+        vx,
+        vy,
+        vz,
+        (zero - rx * kd) + cx * kl,
+        (f.minus_gravity - ry * kd) + cy * kl,
+        (zero - rz * kd) + cz * kl,
+        neg(f.decay * speed) * s,
+    ]
+}
+
+/// `y + h Σ cⱼ kⱼ` in every lane, each with its own `h` (the scalar `combine`'s order).
+#[inline(always)]
+fn combine<P: Pack, const K: usize>(
+    y: &States<P>,
+    h: P,
+    c: [f64; K],
+    k: [&States<P>; K],
+) -> States<P> {
+    let mut out = *y;
+    for (cj, kj) in c.iter().zip(k.iter()) {
+        let w = h * P::splat(lit(*cj));
+        for (o, x) in out.iter_mut().zip(kj.iter()) {
+            *o = *o + w * *x;
+        }
+    }
+    out
+}
+
+// The Dormand–Prince 5(4) tableau (the scalar integrator's, `integrate.rs`).
+const A2: [f64; 1] = [1.0 / 5.0];
+const A3: [f64; 2] = [3.0 / 40.0, 9.0 / 40.0];
+const A4: [f64; 3] = [44.0 / 45.0, -56.0 / 15.0, 32.0 / 9.0];
+const A5: [f64; 4] = [
+    19372.0 / 6561.0,
+    -25360.0 / 2187.0,
+    64448.0 / 6561.0,
+    -212.0 / 729.0,
+];
+const A6: [f64; 5] = [
+    9017.0 / 3168.0,
+    -355.0 / 33.0,
+    46732.0 / 5247.0,
+    49.0 / 176.0,
+    -5103.0 / 18656.0,
+];
+const B: [f64; 5] = [
+    35.0 / 384.0,
+    500.0 / 1113.0,
+    125.0 / 192.0,
+    -2187.0 / 6784.0,
+    11.0 / 84.0,
+];
+const E: [f64; 6] = [
+    71.0 / 57600.0,
+    -71.0 / 16695.0,
+    71.0 / 1920.0,
+    -17253.0 / 339_200.0,
+    22.0 / 525.0,
+    -1.0 / 40.0,
+];
+
+/// One Dormand–Prince step of every lane: the stages the interpolant needs, the
+/// 5th-order result, `k₇ = f(y₁)` and the scaled error norm.
+pub(crate) struct Stages<P> {
+    pub(crate) k3: States<P>,
+    pub(crate) k4: States<P>,
+    pub(crate) k5: States<P>,
+    pub(crate) k6: States<P>,
+    pub(crate) k7: States<P>,
+    pub(crate) y1: States<P>,
+    /// `max_i |eᵢ|·wᵢ` (≤ 1 passes; NaN propagates as a rejection).
+    pub(crate) err: P,
+}
+
+/// `larger(a, b)` of `crate::real` (C's `fmax`) as one blend: `b` when `a < b` or `a` is
+/// NaN, else `a`.
+#[inline(always)]
+fn larger<P: Pack>(a: P, b: P) -> P {
+    (a.lt(b) | a.ne(a)).blend(b, a)
+}
+
+/// One step of size `h[l]` from `y` (with `k₁ = f(y)`) in every lane: 6 evaluations.
+#[inline(always)]
+pub(crate) fn step<P: Pack>(
+    f: &Field<P>,
+    y: &States<P>,
+    k1: &States<P>,
+    h: P,
+    rtol: P,
+    atol: P,
+) -> Stages<P> {
+    let k2 = eval(f, &combine(y, h, A2, [k1]));
+    let k3 = eval(f, &combine(y, h, A3, [k1, &k2]));
+    let k4 = eval(f, &combine(y, h, A4, [k1, &k2, &k3]));
+    let k5 = eval(f, &combine(y, h, A5, [k1, &k2, &k3, &k4]));
+    let k6 = eval(f, &combine(y, h, A6, [k1, &k2, &k3, &k4, &k5]));
+    let y1 = combine(y, h, B, [k1, &k3, &k4, &k5, &k6]);
+    let one = P::splat(lit(1.0));
+    let zero = P::splat(lit(0.0));
+    let weight: States<P> =
+        core::array::from_fn(|i| one / (atol + rtol * larger(y[i].abs(), y1[i].abs())));
+    let k7 = eval(f, &y1);
+    let e = combine(&[zero; 7], h, E, [k1, &k3, &k4, &k5, &k6, &k7]);
+    let mut err = zero;
+    for (ei, wi) in e.iter().zip(weight.iter()) {
+        let r = ei.abs() * *wi;
+        // `!(r <= err)` also propagates NaN into a rejection (the scalar rule).
+        err = (!r.le(err)).blend(r, err);
+    }
+    Stages {
+        k3,
+        k4,
+        k5,
+        k6,
+        k7,
+        y1,
+        err,
+    }
+}
