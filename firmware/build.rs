@@ -21,6 +21,8 @@ mod estimate_cases;
 mod golden_input;
 #[path = "src/ground_cases.rs"]
 mod ground_cases;
+#[path = "src/launch_fit_cases.rs"]
+mod launch_fit_cases;
 
 use carry_core::aero::AeroModel;
 use cases::{FLIGHT_OUTPUTS, IMPACT_OUTPUTS};
@@ -51,10 +53,12 @@ fn main() {
     flight(&carry_golden::flight_cases().unwrap(), &mut code);
     ground(&mut code);
     estimates(&mut code);
+    launch_fits(&mut code);
     std::fs::write(out.join("golden_data.rs"), code).unwrap();
     println!("cargo::rerun-if-changed=src/cases.rs");
     println!("cargo::rerun-if-changed=src/ground_cases.rs");
     println!("cargo::rerun-if-changed=src/estimate_cases.rs");
+    println!("cargo::rerun-if-changed=src/launch_fit_cases.rs");
     println!("cargo::rerun-if-changed=build.rs");
 }
 
@@ -242,6 +246,26 @@ fn estimates(code: &mut String) {
             c.name,
             host::<f32, ESTIMATE_OUTPUTS>(c.outputs(), bits32),
             host::<f64, ESTIMATE_OUTPUTS>(c.outputs(), bits64),
+        )
+        .unwrap();
+    }
+    writeln!(code, "];").unwrap();
+}
+
+/// The host's results of the launch fits (src/launch_fit_cases.rs).
+fn launch_fits(code: &mut String) {
+    use carry_core::launch_fit::Workspace;
+    use launch_fit_cases::{LAUNCH_FIT_CASES, LAUNCH_FIT_OUTPUTS};
+    let mut ws32 = Box::new(Workspace::<f32>::new());
+    let mut ws64 = Box::new(Workspace::<f64>::new());
+    writeln!(code, "pub const LAUNCH_FIT: &[LaunchFitHost] = &[").unwrap();
+    for c in &LAUNCH_FIT_CASES {
+        writeln!(
+            code,
+            "LaunchFitHost {{ name: {:?}, host_f32: {}, host_f64: {} }},",
+            c.name,
+            host::<f32, LAUNCH_FIT_OUTPUTS>(c.outputs(&mut ws32), bits32),
+            host::<f64, LAUNCH_FIT_OUTPUTS>(c.outputs(&mut ws64), bits64),
         )
         .unwrap();
     }

@@ -129,6 +129,10 @@ pub fn error_code(e: &Error) -> u8 {
         Error::TimeLimit => 6,
         Error::StepSizeUnderflow => 7,
         Error::Unstable => 8,
+        Error::NoConvergence => 9,
+        Error::IllPosed => 10,
+        Error::TooFewObservations => 11,
+        Error::Unidentifiable(_) => 12,
         _ => 255,
     }
 }
@@ -145,6 +149,10 @@ pub fn error_name(code: u8) -> &'static str {
         6 => "time_limit",
         7 => "step_size_underflow",
         8 => "unstable",
+        9 => "no_convergence",
+        10 => "ill_posed",
+        11 => "too_few_observations",
+        12 => "unidentifiable",
         _ => "other",
     }
 }

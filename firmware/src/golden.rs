@@ -79,4 +79,15 @@ pub struct EstimateHost {
     pub host_f64: Host<{ crate::estimate_cases::ESTIMATE_OUTPUTS }>,
 }
 
+/// One launch fit (issue 36) and the host's results (f32, f64).
+#[derive(Debug, Clone, Copy)]
+pub struct LaunchFitHost {
+    /// Case name ([`crate::launch_fit_cases::LAUNCH_FIT_CASES`], same order).
+    pub name: &'static str,
+    /// Host result in f32.
+    pub host_f32: Host<{ crate::launch_fit_cases::LAUNCH_FIT_OUTPUTS }>,
+    /// Host result in f64.
+    pub host_f64: Host<{ crate::launch_fit_cases::LAUNCH_FIT_OUTPUTS }>,
+}
+
 include!(concat!(env!("OUT_DIR"), "/golden_data.rs"));

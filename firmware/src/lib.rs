@@ -15,6 +15,7 @@ pub mod cost;
 pub mod estimate_cases;
 pub mod golden;
 pub mod ground_cases;
+pub mod launch_fit_cases;
 pub mod shot;
 pub mod stack;
 

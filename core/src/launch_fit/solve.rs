@@ -14,7 +14,7 @@
 //! makes the cost fall (stationary to the precision); the posterior covariance is `A⁻¹`
 //! at that point.
 
-use super::model::{Schedule, observed, predict, row_kind};
+use super::model::{Schedule, observed, predict, row_kind, shared_scene};
 use super::{
     Datum, IDENTIFIED_RATIO, LaunchFit, LaunchValues, MAX_ROWS, MeasuredLaunch, Observations,
     Settings, Source, UNKNOWNS, Workspace,
@@ -24,7 +24,7 @@ use crate::error::{Error, Field, Reason, Result};
 use crate::estimate::spd::Cholesky;
 use crate::flight::FlightOutcome;
 use crate::real::{Real, lit};
-use crate::scene::Scene;
+use crate::scene::{PreparedScene, Scene};
 use nalgebra::{SMatrix, SVector};
 
 type V<T> = SVector<T, UNKNOWNS>;
@@ -61,6 +61,8 @@ struct Problem<'a, T: Real> {
     obs: &'a Observations<T>,
     settings: &'a Settings<T>,
     schedule: Schedule<T>,
+    /// The scene all flights share when it is not fitted.
+    shared: Option<PreparedScene<T>>,
     rows: usize,
     active: [bool; UNKNOWNS],
     q: V<T>,
@@ -82,6 +84,7 @@ impl<T: Real> Problem<'_, T> {
         let outcome = predict(
             self.ball,
             self.scene,
+            self.shared.as_ref(),
             &xa,
             self.obs,
             &self.schedule,
@@ -161,6 +164,7 @@ pub(super) fn run<T: Real>(
         obs,
         settings,
         schedule: Schedule::of(obs),
+        shared: shared_scene(ball, scene, settings)?,
         rows,
         active,
         q,
@@ -284,7 +288,12 @@ pub(super) fn run<T: Real>(
                     x = trial_x;
                     cost = trial_cost;
                     outcome = trial_outcome;
-                    core::mem::swap(&mut ws.residual, &mut ws.trial);
+                    // Only the rows in use: swapping the whole buffers (2 × 454 numbers)
+                    // cost ≈ 1.4k instructions per accepted step on a Cortex-M4F.
+                    if let (Some(r), Some(t)) = (ws.residual.get_mut(..rows), ws.trial.get(..rows))
+                    {
+                        r.copy_from_slice(t);
+                    }
                     let shrunk = lambda / lit(LAMBDA_GROWTH);
                     lambda = if shrunk > lit(LAMBDA_MIN) {
                         shrunk

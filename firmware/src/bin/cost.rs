@@ -393,6 +393,56 @@ fn suite<T: Real>(ticks: &Ticks, k: &mut u32, p: &str) {
         },
     );
 
+    // The launch from the flight (issue 36): `evals` counts flights, `carry` is the fitted
+    // launch's. The observations are made (and noised) before the region; only the fit
+    // is counted. The caller-owned workspace lives on the stack here.
+    // Not on the micro:bit: its 16 KiB of RAM cannot hold the workspace (21,792 B in f32),
+    // and its 256 KiB of flash not this image with the fit in f32 and f64.
+    #[cfg(not(carry_m0))]
+    {
+        let mut ws = carry_core::launch_fit::Workspace::<T>::new();
+        let fit_settings = black_box(carry_core::launch_fit::Settings::<T>::default());
+        let fit_scene = black_box(Scene::<T>::default());
+        let mut fit = |name: &str, case: &carry_firmware::launch_fit_cases::LaunchFitCase| {
+            let (measured, obs) = case
+                .inputs::<T>()
+                .unwrap_or_else(|_| carry_firmware::exit(1));
+            let (measured, obs) = (black_box(measured), black_box(obs));
+            op(ticks, k, name, 1, &mut || {
+                carry_core::launch_fit::fit_launch(
+                    &ball,
+                    &fit_scene,
+                    &measured,
+                    &obs,
+                    &fit_settings,
+                    &mut ws,
+                )
+                .map(|f| (u32::from(f.flights), to_f64(f.flight.carry_m)))
+            });
+        };
+        let cases = &carry_firmware::launch_fit_cases::LAUNCH_FIT_CASES;
+        fit(
+            label!(
+                "LAUNCH FIT (a): launch + apex, carry, side, flight time, landing -> spin, axis"
+            ),
+            &cases[0],
+        );
+        fit(label!("LAUNCH FIT (a), 7 iron"), &cases[1]);
+        fit(
+            label!("LAUNCH FIT (b): 32-point track over 1.5 s -> full launch"),
+            &cases[3],
+        );
+        fit(
+            label!("LAUNCH FIT (c): Doppler 1 s at 100 Hz + launch, axis -> spin"),
+            &cases[4],
+        );
+        if p == "f32" {
+            for case in &carry_firmware::launch_fit_cases::COST_CASES {
+                fit(case.name, case);
+            }
+        }
+    }
+
     let integrator = black_box(Integrator::<T>::default());
     op(
         ticks,
