@@ -86,6 +86,73 @@
 // speed, attack and path at the head's CG (TrackMan's; the defaults' and the CLI's).
 #define CARRY_CONVENTION_TRACKMAN 1
 
+// Track points an input can hold (`carry_core::launch_fit::MAX_TRACK_POINTS`); more are
+// `CARRY_ERR_TOO_MANY_OBSERVATIONS`.
+#define CARRY_LAUNCH_FIT_MAX_TRACK_POINTS 64
+
+// Doppler samples an input can hold (`MAX_DOPPLER_SAMPLES`).
+#define CARRY_LAUNCH_FIT_MAX_DOPPLER_SAMPLES 256
+
+// Numbers in the solver's scratch space: `(UNKNOWNS + 4) · MAX_ROWS` = 12 · 454.
+#define CARRY_LAUNCH_FIT_WORKSPACE_LEN 5448
+
+// `CarryLaunchFromFlightInput::measured` bit: the ball speed was measured.
+#define CARRY_MEASURED_BALL_SPEED 1
+
+// `CarryLaunchFromFlightInput::measured` bit: the launch angle was measured.
+#define CARRY_MEASURED_LAUNCH_ANGLE 2
+
+// `CarryLaunchFromFlightInput::measured` bit: the launch direction was measured.
+#define CARRY_MEASURED_LAUNCH_DIRECTION 4
+
+// `CarryLaunchFromFlightInput::measured` bit: the spin rate was measured.
+#define CARRY_MEASURED_SPIN 8
+
+// `CarryLaunchFromFlightInput::measured` bit: the spin axis was measured.
+#define CARRY_MEASURED_SPIN_AXIS 16
+
+// `CarryLaunchFromFlightInput::observed` bit (and `worst_observation` code): apex height.
+#define CARRY_OBSERVED_APEX_HEIGHT 1
+
+// `observed` bit: time of the apex.
+#define CARRY_OBSERVED_APEX_TIME 2
+
+// `observed` bit: carry.
+#define CARRY_OBSERVED_CARRY 4
+
+// `observed` bit: side at the landing.
+#define CARRY_OBSERVED_SIDE 8
+
+// `observed` bit: flight time.
+#define CARRY_OBSERVED_FLIGHT_TIME 16
+
+// `observed` bit: landing angle.
+#define CARRY_OBSERVED_LAND_ANGLE 32
+
+// `CarryLaunchFromFlightResult::worst_observation`: a coordinate (`worst_axis`: 0 x, 1 y,
+// 2 z) of track point `worst_index`.
+#define CARRY_OBSERVED_TRACK 64
+
+// `worst_observation`: Doppler sample `worst_index`.
+#define CARRY_OBSERVED_DOPPLER 128
+
+// `CarryLaunchSources` field: measured at launch (refined by the flight within its 1σ).
+#define CARRY_SOURCE_MEASURED 0
+
+// `CarryLaunchSources` field: not measured, fitted to the flight.
+#define CARRY_SOURCE_FITTED 1
+
+// `CarryLaunchFromFlightResult::unidentified` (with `CARRY_ERR_UNIDENTIFIABLE`): the
+// fitted uniform wind. (The launch quantities use `CARRY_DATUM_BALL_SPEED` …
+// `CARRY_DATUM_SPIN_AXIS`.)
+#define CARRY_DATUM_WIND 11
+
+// `unidentified`: the fitted air density.
+#define CARRY_DATUM_AIR_DENSITY 12
+
+// `unidentified`: none (the call did not return `CARRY_ERR_UNIDENTIFIABLE`).
+#define CARRY_DATUM_NONE 255
+
 // `CarryScene::aero`: the modern model fitted to TrackMan's 2023 tour table and 2010
 // driver chart (the default before issue 35).
 #define CARRY_AERO_TOUR2023 0
@@ -200,6 +267,14 @@ typedef enum carry_error_t {
   // The estimator's data disagree with each other or with the club: `*out` is written
   // (the best compromise) and its `worst` names the worst datum (`CARRY_DATUM_*`).
   CARRY_ERR_INCONSISTENT = 17,
+  // The launch fit has fewer flight observations than launch quantities to fit.
+  CARRY_ERR_TOO_FEW_OBSERVATIONS = 18,
+  // The flight observations do not determine a fitted quantity: `out->unidentified`
+  // names it (`CARRY_DATUM_*`); measure it or observe more of the flight.
+  CARRY_ERR_UNIDENTIFIABLE = 19,
+  // More track points or Doppler samples than the launch fit holds
+  // (`CARRY_LAUNCH_FIT_MAX_TRACK_POINTS`, `CARRY_LAUNCH_FIT_MAX_DOPPLER_SAMPLES`).
+  CARRY_ERR_TOO_MANY_OBSERVATIONS = 20,
 } carry_error_t;
 
 // A club head (SI units, angles in radians; frames of PHYSICS.md). Start from
@@ -1104,6 +1179,322 @@ typedef struct CarryEstimateResult_f64 {
 // Estimate result in double precision.
 typedef struct CarryEstimateResult_f64 CarryEstimateResultF64;
 
+// The flight summaries a monitor reports (m, s, rad), or their 1σ.
+typedef struct CarryFlightSummaries_f32 {
+  // Apex height above the tee's ground (m).
+  float apex_height_m;
+  // Time of the apex (s).
+  float apex_time_s;
+  // Carry: horizontal distance from the tee to the landing (m).
+  float carry_m;
+  // Side at the landing, + right (m).
+  float side_m;
+  // Flight time (s).
+  float flight_time_s;
+  // Landing angle below the horizontal (rad).
+  float land_angle_rad;
+} CarryFlightSummaries_f32;
+
+// A timed position of the ball (a radar's or a camera's track point).
+typedef struct CarryTrackPoint_f32 {
+  // Time since launch (s), not before the previous point's.
+  float time_s;
+  // Position (m, global frame: x downrange, y up, z right; the tee at the origin).
+  float position_m[3];
+  // 1σ of each coordinate (m), positive.
+  float sd_m;
+} CarryTrackPoint_f32;
+
+// A timed speed along the radar's line of sight, + away from the radar.
+typedef struct CarryDopplerSample_f32 {
+  // Time since launch (s), not before the previous sample's.
+  float time_s;
+  // Radial speed (m/s).
+  float radial_speed_mps;
+  // Its 1σ (m/s), positive.
+  float sd_mps;
+} CarryDopplerSample_f32;
+
+// What `carry_launch_from_flight_*` needs. Start from
+// `carry_launch_from_flight_input_default_*`, set the `measured` launch and the `observed`
+// summaries (each with its 1σ), and point `track`/`doppler` at the caller's arrays.
+typedef struct CarryLaunchFromFlightInput_f32 {
+  // The ball.
+  struct CarryBall_f32 ball;
+  // The flight's scene (aerodynamic model, air, wind, landing height; its ground is not
+  // used: the observations are of the flight).
+  struct CarryScene_f32 scene;
+  // The flights' integrator (`solver` is not used).
+  struct CarrySettings_f32 settings;
+  // Which launch quantities were measured: an OR of `CARRY_MEASURED_BALL_SPEED` …
+  // `CARRY_MEASURED_SPIN_AXIS`; the others are fitted.
+  uint32_t measured;
+  // The measured launch (only the fields `measured` names are read).
+  struct CarryBallData_f32 measured_launch;
+  // Their 1σ (positive).
+  struct CarryBallData_f32 measured_sd;
+  // Which summaries were observed: an OR of `CARRY_OBSERVED_APEX_HEIGHT` …
+  // `CARRY_OBSERVED_LAND_ANGLE`.
+  uint32_t observed;
+  // The observed summaries (only the fields `observed` names are read).
+  struct CarryFlightSummaries_f32 summaries;
+  // Their 1σ (positive).
+  struct CarryFlightSummaries_f32 summaries_sd;
+  // `track_len` timed positions in time order (may be NULL when `track_len` is 0).
+  const struct CarryTrackPoint_f32 *track;
+  // Number of track points, at most `CARRY_LAUNCH_FIT_MAX_TRACK_POINTS`.
+  size_t track_len;
+  // `doppler_len` timed radial speeds in time order (may be NULL when `doppler_len` is 0).
+  const struct CarryDopplerSample_f32 *doppler;
+  // Number of Doppler samples, at most `CARRY_LAUNCH_FIT_MAX_DOPPLER_SAMPLES`.
+  size_t doppler_len;
+  // Where the Doppler radar is (m, global frame; default 2.5 m behind the tee, 0.3 m up).
+  float radar_position_m[3];
+  // Prior mean of each launch quantity (used where not measured).
+  struct CarryBallData_f32 prior_mean;
+  // Prior spread (1σ) of each launch quantity.
+  struct CarryBallData_f32 prior_sd;
+  // Prior 1σ of each horizontal wind component when fitted (m/s).
+  float wind_prior_sd_mps;
+  // Prior 1σ of the air density when fitted (kg/m³; its mean: the scene's).
+  float air_density_prior_sd_kgm3;
+  // Non-zero: also fit a uniform horizontal wind (x, z) instead of the scene's.
+  uint32_t fit_wind;
+  // Non-zero: also fit the air density instead of the scene's.
+  uint32_t fit_air_density;
+  // Iteration budget, 1..=65535.
+  uint32_t max_iterations;
+  // Stop when the Newton step is below this many posterior σ (positive).
+  float tolerance;
+} CarryLaunchFromFlightInput_f32;
+
+// Launch-from-flight input in single precision.
+typedef struct CarryLaunchFromFlightInput_f32 CarryLaunchFromFlightInputF32;
+
+// The flight summaries a monitor reports (m, s, rad), or their 1σ.
+typedef struct CarryFlightSummaries_f64 {
+  // Apex height above the tee's ground (m).
+  double apex_height_m;
+  // Time of the apex (s).
+  double apex_time_s;
+  // Carry: horizontal distance from the tee to the landing (m).
+  double carry_m;
+  // Side at the landing, + right (m).
+  double side_m;
+  // Flight time (s).
+  double flight_time_s;
+  // Landing angle below the horizontal (rad).
+  double land_angle_rad;
+} CarryFlightSummaries_f64;
+
+// A timed position of the ball (a radar's or a camera's track point).
+typedef struct CarryTrackPoint_f64 {
+  // Time since launch (s), not before the previous point's.
+  double time_s;
+  // Position (m, global frame: x downrange, y up, z right; the tee at the origin).
+  double position_m[3];
+  // 1σ of each coordinate (m), positive.
+  double sd_m;
+} CarryTrackPoint_f64;
+
+// A timed speed along the radar's line of sight, + away from the radar.
+typedef struct CarryDopplerSample_f64 {
+  // Time since launch (s), not before the previous sample's.
+  double time_s;
+  // Radial speed (m/s).
+  double radial_speed_mps;
+  // Its 1σ (m/s), positive.
+  double sd_mps;
+} CarryDopplerSample_f64;
+
+// What `carry_launch_from_flight_*` needs. Start from
+// `carry_launch_from_flight_input_default_*`, set the `measured` launch and the `observed`
+// summaries (each with its 1σ), and point `track`/`doppler` at the caller's arrays.
+typedef struct CarryLaunchFromFlightInput_f64 {
+  // The ball.
+  struct CarryBall_f64 ball;
+  // The flight's scene (aerodynamic model, air, wind, landing height; its ground is not
+  // used: the observations are of the flight).
+  struct CarryScene_f64 scene;
+  // The flights' integrator (`solver` is not used).
+  struct CarrySettings_f64 settings;
+  // Which launch quantities were measured: an OR of `CARRY_MEASURED_BALL_SPEED` …
+  // `CARRY_MEASURED_SPIN_AXIS`; the others are fitted.
+  uint32_t measured;
+  // The measured launch (only the fields `measured` names are read).
+  struct CarryBallData_f64 measured_launch;
+  // Their 1σ (positive).
+  struct CarryBallData_f64 measured_sd;
+  // Which summaries were observed: an OR of `CARRY_OBSERVED_APEX_HEIGHT` …
+  // `CARRY_OBSERVED_LAND_ANGLE`.
+  uint32_t observed;
+  // The observed summaries (only the fields `observed` names are read).
+  struct CarryFlightSummaries_f64 summaries;
+  // Their 1σ (positive).
+  struct CarryFlightSummaries_f64 summaries_sd;
+  // `track_len` timed positions in time order (may be NULL when `track_len` is 0).
+  const struct CarryTrackPoint_f64 *track;
+  // Number of track points, at most `CARRY_LAUNCH_FIT_MAX_TRACK_POINTS`.
+  size_t track_len;
+  // `doppler_len` timed radial speeds in time order (may be NULL when `doppler_len` is 0).
+  const struct CarryDopplerSample_f64 *doppler;
+  // Number of Doppler samples, at most `CARRY_LAUNCH_FIT_MAX_DOPPLER_SAMPLES`.
+  size_t doppler_len;
+  // Where the Doppler radar is (m, global frame; default 2.5 m behind the tee, 0.3 m up).
+  double radar_position_m[3];
+  // Prior mean of each launch quantity (used where not measured).
+  struct CarryBallData_f64 prior_mean;
+  // Prior spread (1σ) of each launch quantity.
+  struct CarryBallData_f64 prior_sd;
+  // Prior 1σ of each horizontal wind component when fitted (m/s).
+  double wind_prior_sd_mps;
+  // Prior 1σ of the air density when fitted (kg/m³; its mean: the scene's).
+  double air_density_prior_sd_kgm3;
+  // Non-zero: also fit a uniform horizontal wind (x, z) instead of the scene's.
+  uint32_t fit_wind;
+  // Non-zero: also fit the air density instead of the scene's.
+  uint32_t fit_air_density;
+  // Iteration budget, 1..=65535.
+  uint32_t max_iterations;
+  // Stop when the Newton step is below this many posterior σ (positive).
+  double tolerance;
+} CarryLaunchFromFlightInput_f64;
+
+// Launch-from-flight input in double precision.
+typedef struct CarryLaunchFromFlightInput_f64 CarryLaunchFromFlightInputF64;
+
+// The solver's scratch space, owned by the caller (e.g. a `static` on a microcontroller):
+// `CARRY_LAUNCH_FIT_WORKSPACE_LEN` numbers. Its contents need no initialisation and mean
+// nothing after the call.
+typedef struct CarryLaunchFromFlightWorkspace_f32 {
+  // Scratch.
+  float scratch[CARRY_LAUNCH_FIT_WORKSPACE_LEN];
+} CarryLaunchFromFlightWorkspace_f32;
+
+// The launch fit's scratch space in single precision.
+typedef struct CarryLaunchFromFlightWorkspace_f32 CarryLaunchFromFlightWorkspaceF32;
+
+// Where each launch figure came from: `CARRY_SOURCE_MEASURED` or `CARRY_SOURCE_FITTED`.
+typedef struct CarryLaunchSources {
+  // Ball speed.
+  uint32_t ball_speed;
+  // Launch angle.
+  uint32_t launch_angle;
+  // Launch direction.
+  uint32_t launch_direction;
+  // Spin rate.
+  uint32_t spin;
+  // Spin axis.
+  uint32_t spin_axis;
+} CarryLaunchSources;
+
+// The fitted launch.
+typedef struct CarryLaunchFromFlightResult_f32 {
+  // The launch quantities (posterior mode; m/s, rad, rad/s).
+  struct CarryBallData_f32 value;
+  // Their 1σ.
+  struct CarryBallData_f32 sd;
+  // Where each came from.
+  struct CarryLaunchSources source;
+  // 1 when the wind was fitted (then `wind_mps`, `wind_sd_mps` hold it), else 0.
+  uint32_t wind_fitted;
+  // The fitted uniform wind (x downrange, z right; m/s).
+  float wind_mps[2];
+  // Its 1σ.
+  float wind_sd_mps[2];
+  // 1 when the air density was fitted, else 0.
+  uint32_t air_density_fitted;
+  // The fitted air density (kg/m³).
+  float air_density_kgm3;
+  // Its 1σ.
+  float air_density_sd_kgm3;
+  // The fitted launch's flight through the (fitted) scene, no ground: apex height, apex
+  // time, carry, side, flight time, landing angle.
+  struct CarryFlightSummaries_f32 flight;
+  // `Σ ((model − observed)/σ)²` over the flight observations at the fit.
+  float chi2;
+  // Flight observations (residual rows) used.
+  uint32_t observations;
+  // The observation the fit misses most: a `CARRY_OBSERVED_*` code.
+  uint32_t worst_observation;
+  // Its track point or Doppler sample index (`CARRY_OBSERVED_TRACK`, `_DOPPLER`).
+  uint32_t worst_index;
+  // Its coordinate (0 x, 1 y, 2 z) for `CARRY_OBSERVED_TRACK`.
+  uint32_t worst_axis;
+  // By how many of its σ (signed: model − observed).
+  float worst_residual_sd;
+  // Levenberg–Marquardt iterations.
+  uint32_t iterations;
+  // Flights flown (the cost).
+  uint32_t flights;
+  // With `CARRY_ERR_UNIDENTIFIABLE`: the unknown the observations do not determine
+  // (`CARRY_DATUM_BALL_SPEED` … `CARRY_DATUM_SPIN_AXIS`, `CARRY_DATUM_WIND`,
+  // `CARRY_DATUM_AIR_DENSITY`); otherwise `CARRY_DATUM_NONE`.
+  uint32_t unidentified;
+} CarryLaunchFromFlightResult_f32;
+
+// Launch-from-flight result in single precision.
+typedef struct CarryLaunchFromFlightResult_f32 CarryLaunchFromFlightResultF32;
+
+// The solver's scratch space, owned by the caller (e.g. a `static` on a microcontroller):
+// `CARRY_LAUNCH_FIT_WORKSPACE_LEN` numbers. Its contents need no initialisation and mean
+// nothing after the call.
+typedef struct CarryLaunchFromFlightWorkspace_f64 {
+  // Scratch.
+  double scratch[CARRY_LAUNCH_FIT_WORKSPACE_LEN];
+} CarryLaunchFromFlightWorkspace_f64;
+
+// The launch fit's scratch space in double precision.
+typedef struct CarryLaunchFromFlightWorkspace_f64 CarryLaunchFromFlightWorkspaceF64;
+
+// The fitted launch.
+typedef struct CarryLaunchFromFlightResult_f64 {
+  // The launch quantities (posterior mode; m/s, rad, rad/s).
+  struct CarryBallData_f64 value;
+  // Their 1σ.
+  struct CarryBallData_f64 sd;
+  // Where each came from.
+  struct CarryLaunchSources source;
+  // 1 when the wind was fitted (then `wind_mps`, `wind_sd_mps` hold it), else 0.
+  uint32_t wind_fitted;
+  // The fitted uniform wind (x downrange, z right; m/s).
+  double wind_mps[2];
+  // Its 1σ.
+  double wind_sd_mps[2];
+  // 1 when the air density was fitted, else 0.
+  uint32_t air_density_fitted;
+  // The fitted air density (kg/m³).
+  double air_density_kgm3;
+  // Its 1σ.
+  double air_density_sd_kgm3;
+  // The fitted launch's flight through the (fitted) scene, no ground: apex height, apex
+  // time, carry, side, flight time, landing angle.
+  struct CarryFlightSummaries_f64 flight;
+  // `Σ ((model − observed)/σ)²` over the flight observations at the fit.
+  double chi2;
+  // Flight observations (residual rows) used.
+  uint32_t observations;
+  // The observation the fit misses most: a `CARRY_OBSERVED_*` code.
+  uint32_t worst_observation;
+  // Its track point or Doppler sample index (`CARRY_OBSERVED_TRACK`, `_DOPPLER`).
+  uint32_t worst_index;
+  // Its coordinate (0 x, 1 y, 2 z) for `CARRY_OBSERVED_TRACK`.
+  uint32_t worst_axis;
+  // By how many of its σ (signed: model − observed).
+  double worst_residual_sd;
+  // Levenberg–Marquardt iterations.
+  uint32_t iterations;
+  // Flights flown (the cost).
+  uint32_t flights;
+  // With `CARRY_ERR_UNIDENTIFIABLE`: the unknown the observations do not determine
+  // (`CARRY_DATUM_BALL_SPEED` … `CARRY_DATUM_SPIN_AXIS`, `CARRY_DATUM_WIND`,
+  // `CARRY_DATUM_AIR_DENSITY`); otherwise `CARRY_DATUM_NONE`.
+  uint32_t unidentified;
+} CarryLaunchFromFlightResult_f64;
+
+// Launch-from-flight result in double precision.
+typedef struct CarryLaunchFromFlightResult_f64 CarryLaunchFromFlightResultF64;
+
 // A ball in single precision.
 typedef struct CarryBall_f32 CarryBallF32;
 
@@ -1128,8 +1519,20 @@ typedef struct CarrySettings_f32 CarrySettingsF32;
 // Numerical settings in double precision.
 typedef struct CarrySettings_f64 CarrySettingsF64;
 
+// A track point in single precision.
+typedef struct CarryTrackPoint_f32 CarryTrackPointF32;
+
+// A track point in double precision.
+typedef struct CarryTrackPoint_f64 CarryTrackPointF64;
+
+// A Doppler sample in single precision.
+typedef struct CarryDopplerSample_f32 CarryDopplerSampleF32;
+
+// A Doppler sample in double precision.
+typedef struct CarryDopplerSample_f64 CarryDopplerSampleF64;
+
 // Every code, in order (for tests and tables).
-#define ALL { CARRY_OK, CARRY_ERR_INVALID_INPUT, CARRY_ERR_OFF_FACE, CARRY_ERR_NO_APPROACH, CARRY_ERR_SINGULAR, CARRY_ERR_NO_LANDING, CARRY_ERR_TIME_LIMIT, CARRY_ERR_STEP_SIZE_UNDERFLOW, CARRY_ERR_UNSTABLE, CARRY_ERR_STEP_LIMIT, CARRY_ERR_NULL_POINTER, CARRY_ERR_BUFFER_TOO_SMALL, CARRY_ERR_UNKNOWN_NAME, CARRY_ERR_UNKNOWN_OPTION, CARRY_ERR_OTHER, CARRY_ERR_NO_CONVERGENCE, CARRY_ERR_ILL_POSED, CARRY_ERR_INCONSISTENT, }
+#define ALL { CARRY_OK, CARRY_ERR_INVALID_INPUT, CARRY_ERR_OFF_FACE, CARRY_ERR_NO_APPROACH, CARRY_ERR_SINGULAR, CARRY_ERR_NO_LANDING, CARRY_ERR_TIME_LIMIT, CARRY_ERR_STEP_SIZE_UNDERFLOW, CARRY_ERR_UNSTABLE, CARRY_ERR_STEP_LIMIT, CARRY_ERR_NULL_POINTER, CARRY_ERR_BUFFER_TOO_SMALL, CARRY_ERR_UNKNOWN_NAME, CARRY_ERR_UNKNOWN_OPTION, CARRY_ERR_OTHER, CARRY_ERR_NO_CONVERGENCE, CARRY_ERR_ILL_POSED, CARRY_ERR_INCONSISTENT, CARRY_ERR_TOO_FEW_OBSERVATIONS, CARRY_ERR_UNIDENTIFIABLE, CARRY_ERR_TOO_MANY_OBSERVATIONS, }
 
 #ifdef __cplusplus
 extern "C" {
@@ -1310,6 +1713,49 @@ enum carry_error_t carry_estimate_f32(const CarryEstimateInputF32 *input,
 // As `carry_estimate_f32`.
 enum carry_error_t carry_estimate_f64(const CarryEstimateInputF64 *input,
                                       CarryEstimateResultF64 *out);
+
+// The default launch-from-flight input (issue 36): the standard ball, the default scene
+// and integrator, nothing measured or observed (the 1σ fields hold the CLI's defaults),
+// no track, the radar 2.5 m behind the tee at 0.3 m, broad priors, launch only. Single
+// precision.
+//
+// # Safety
+// `out` is NULL or points to a writable input.
+enum carry_error_t carry_launch_from_flight_input_default_f32(CarryLaunchFromFlightInputF32 *out);
+
+// The default launch-from-flight input, double precision (see
+// `carry_launch_from_flight_input_default_f32`).
+//
+// # Safety
+// As `carry_launch_from_flight_input_default_f32`.
+enum carry_error_t carry_launch_from_flight_input_default_f64(CarryLaunchFromFlightInputF64 *out);
+
+// The launch from the flight (issue 36, docs/launch_fit.md): the launch quantities not
+// measured (`input->measured`), fitted to the observed summaries, track points and
+// Doppler samples, each with its 1σ and source; single precision. `workspace` is the
+// solver's scratch (caller-owned, uninitialised is fine). Writes `*out` on `CARRY_OK`,
+// and on `CARRY_ERR_UNIDENTIFIABLE` (zeros, `out->unidentified` naming the quantity the
+// observations do not determine) only. Errors: `CARRY_ERR_TOO_FEW_OBSERVATIONS`,
+// `CARRY_ERR_UNIDENTIFIABLE`, `CARRY_ERR_TOO_MANY_OBSERVATIONS`,
+// `CARRY_ERR_NO_CONVERGENCE`, `CARRY_ERR_ILL_POSED`, `CARRY_ERR_INVALID_INPUT` (a bad
+// value or 1σ, times out of order, a misaligned workspace), `CARRY_ERR_NULL_POINTER` (also
+// a NULL array with a length), `CARRY_ERR_UNKNOWN_OPTION`, a flight's.
+//
+// # Safety
+// `input` is NULL or points to a readable input whose `track` and `doppler` are NULL or
+// point to `track_len` and `doppler_len` readable elements; `workspace` and `out` are
+// NULL or point to a writable workspace and result.
+enum carry_error_t carry_launch_from_flight_f32(const CarryLaunchFromFlightInputF32 *input,
+                                                CarryLaunchFromFlightWorkspaceF32 *workspace,
+                                                CarryLaunchFromFlightResultF32 *out);
+
+// The launch from the flight, double precision (see `carry_launch_from_flight_f32`).
+//
+// # Safety
+// As `carry_launch_from_flight_f32`.
+enum carry_error_t carry_launch_from_flight_f64(const CarryLaunchFromFlightInputF64 *input,
+                                                CarryLaunchFromFlightWorkspaceF64 *workspace,
+                                                CarryLaunchFromFlightResultF64 *out);
 
 // Fills `*out` with a club head: the `driver` preset with its calibrated compliant contact (the CLI's default club); single precision.
 //

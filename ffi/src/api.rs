@@ -476,3 +476,121 @@ pub unsafe extern "C" fn carry_estimate_f64(
     // SAFETY: the caller's contract, forwarded.
     unsafe { estimate_entry(input, out) }
 }
+
+/// # Safety
+/// `input` NULL or readable (its arrays as documented); `workspace` and `out` NULL or
+/// writable.
+unsafe fn launch_from_flight_entry<T: Real>(
+    input: *const crate::launch_fit::CarryLaunchFromFlightInput<T>,
+    workspace: *mut crate::launch_fit::CarryLaunchFromFlightWorkspace<T>,
+    out: *mut crate::launch_fit::CarryLaunchFromFlightResult<T>,
+) -> CarryError {
+    code((|| {
+        let out = non_null(out)?;
+        let workspace = non_null(workspace)?;
+        if !workspace.is_aligned() {
+            return Err(crate::error::CARRY_ERR_INVALID_INPUT);
+        }
+        // SAFETY: not NULL, aligned, writable and not aliased during the call (the
+        // caller's contract).
+        let ws = crate::launch_fit::workspace(unsafe { &mut *workspace });
+        // SAFETY: NULL or readable by the caller's contract, its arrays forwarded.
+        let result = unsafe { with(input, |i| Ok(crate::launch_fit::run(i, ws))) }?;
+        match result {
+            Ok(r) => {
+                // SAFETY: not NULL; writable by the caller's contract.
+                unsafe { write(out, r) };
+                Ok(())
+            }
+            Err((e, unidentified)) => {
+                if e == crate::error::CARRY_ERR_UNIDENTIFIABLE {
+                    let r = crate::launch_fit::CarryLaunchFromFlightResult::refused(unidentified);
+                    // SAFETY: as above.
+                    unsafe { write(out, r) };
+                }
+                Err(e)
+            }
+        }
+    })())
+}
+
+fn launch_from_flight_default<T: Real>(
+    out: *mut crate::launch_fit::CarryLaunchFromFlightInput<T>,
+) -> CarryError {
+    code((|| {
+        let out = non_null(out)?;
+        // SAFETY: not NULL; writable by the caller's contract.
+        unsafe {
+            write(
+                out,
+                crate::launch_fit::CarryLaunchFromFlightInput::typical(),
+            )
+        };
+        Ok(())
+    })())
+}
+
+/// The default launch-from-flight input (issue 36): the standard ball, the default scene
+/// and integrator, nothing measured or observed (the 1σ fields hold the CLI's defaults),
+/// no track, the radar 2.5 m behind the tee at 0.3 m, broad priors, launch only. Single
+/// precision.
+///
+/// # Safety
+/// `out` is NULL or points to a writable input.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn carry_launch_from_flight_input_default_f32(
+    out: *mut crate::CarryLaunchFromFlightInputF32,
+) -> CarryError {
+    launch_from_flight_default(out)
+}
+
+/// The default launch-from-flight input, double precision (see
+/// `carry_launch_from_flight_input_default_f32`).
+///
+/// # Safety
+/// As `carry_launch_from_flight_input_default_f32`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn carry_launch_from_flight_input_default_f64(
+    out: *mut crate::CarryLaunchFromFlightInputF64,
+) -> CarryError {
+    launch_from_flight_default(out)
+}
+
+/// The launch from the flight (issue 36, docs/launch_fit.md): the launch quantities not
+/// measured (`input->measured`), fitted to the observed summaries, track points and
+/// Doppler samples, each with its 1σ and source; single precision. `workspace` is the
+/// solver's scratch (caller-owned, uninitialised is fine). Writes `*out` on `CARRY_OK`,
+/// and on `CARRY_ERR_UNIDENTIFIABLE` (zeros, `out->unidentified` naming the quantity the
+/// observations do not determine) only. Errors: `CARRY_ERR_TOO_FEW_OBSERVATIONS`,
+/// `CARRY_ERR_UNIDENTIFIABLE`, `CARRY_ERR_TOO_MANY_OBSERVATIONS`,
+/// `CARRY_ERR_NO_CONVERGENCE`, `CARRY_ERR_ILL_POSED`, `CARRY_ERR_INVALID_INPUT` (a bad
+/// value or 1σ, times out of order, a misaligned workspace), `CARRY_ERR_NULL_POINTER` (also
+/// a NULL array with a length), `CARRY_ERR_UNKNOWN_OPTION`, a flight's.
+///
+/// # Safety
+/// `input` is NULL or points to a readable input whose `track` and `doppler` are NULL or
+/// point to `track_len` and `doppler_len` readable elements; `workspace` and `out` are
+/// NULL or point to a writable workspace and result.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn carry_launch_from_flight_f32(
+    input: *const crate::CarryLaunchFromFlightInputF32,
+    workspace: *mut crate::CarryLaunchFromFlightWorkspaceF32,
+    out: *mut crate::CarryLaunchFromFlightResultF32,
+) -> CarryError {
+    // SAFETY: the caller's contract, forwarded.
+    unsafe { launch_from_flight_entry(input, workspace, out) }
+}
+
+/// The launch from the flight, double precision (see `carry_launch_from_flight_f32`).
+///
+/// # Safety
+/// As `carry_launch_from_flight_f32`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn carry_launch_from_flight_f64(
+    input: *const crate::CarryLaunchFromFlightInputF64,
+    workspace: *mut crate::CarryLaunchFromFlightWorkspaceF64,
+    out: *mut crate::CarryLaunchFromFlightResultF64,
+) -> CarryError {
+    // SAFETY: the caller's contract, forwarded.
+    unsafe { launch_from_flight_entry(input, workspace, out) }
+}

@@ -48,6 +48,14 @@ pub enum CarryError {
     /// The estimator's data disagree with each other or with the club: `*out` is written
     /// (the best compromise) and its `worst` names the worst datum (`CARRY_DATUM_*`).
     CARRY_ERR_INCONSISTENT = 17,
+    /// The launch fit has fewer flight observations than launch quantities to fit.
+    CARRY_ERR_TOO_FEW_OBSERVATIONS = 18,
+    /// The flight observations do not determine a fitted quantity: `out->unidentified`
+    /// names it (`CARRY_DATUM_*`); measure it or observe more of the flight.
+    CARRY_ERR_UNIDENTIFIABLE = 19,
+    /// More track points or Doppler samples than the launch fit holds
+    /// (`CARRY_LAUNCH_FIT_MAX_TRACK_POINTS`, `CARRY_LAUNCH_FIT_MAX_DOPPLER_SAMPLES`).
+    CARRY_ERR_TOO_MANY_OBSERVATIONS = 20,
 }
 
 pub use CarryError::*;
@@ -70,13 +78,15 @@ impl From<Error> for CarryError {
             Error::NoConvergence => CARRY_ERR_NO_CONVERGENCE,
             Error::IllPosed => CARRY_ERR_ILL_POSED,
             Error::Inconsistent { .. } => CARRY_ERR_INCONSISTENT,
+            Error::TooFewObservations => CARRY_ERR_TOO_FEW_OBSERVATIONS,
+            Error::Unidentifiable(_) => CARRY_ERR_UNIDENTIFIABLE,
             _ => CARRY_ERR_OTHER,
         }
     }
 }
 
 /// Every code, in order (for tests and tables).
-pub const ALL: [CarryError; 18] = [
+pub const ALL: [CarryError; 21] = [
     CARRY_OK,
     CARRY_ERR_INVALID_INPUT,
     CARRY_ERR_OFF_FACE,
@@ -95,6 +105,9 @@ pub const ALL: [CarryError; 18] = [
     CARRY_ERR_NO_CONVERGENCE,
     CARRY_ERR_ILL_POSED,
     CARRY_ERR_INCONSISTENT,
+    CARRY_ERR_TOO_FEW_OBSERVATIONS,
+    CARRY_ERR_UNIDENTIFIABLE,
+    CARRY_ERR_TOO_MANY_OBSERVATIONS,
 ];
 
 /// The message of the code with number `code` (any number: unknown ones have one too).
@@ -119,6 +132,9 @@ pub fn message(code: u32) -> &'static CStr {
         15 => c"the estimate did not converge within its iteration budget",
         16 => c"the estimate is ill-posed in this precision",
         17 => c"the estimate's data disagree with each other or with the club",
+        18 => c"too few flight observations for the launch quantities not measured",
+        19 => c"the flight observations do not determine a fitted quantity: measure it or observe more of the flight",
+        20 => c"more track points or Doppler samples than the launch fit holds",
         _ => c"unknown error code",
     }
 }

@@ -28,6 +28,7 @@ pub mod error;
 pub mod estimate;
 pub mod flight;
 pub mod impact;
+pub mod launch_fit;
 mod ptr;
 pub mod scene;
 pub mod settings;
@@ -103,6 +104,27 @@ pub type CarryEstimateInputF64 = estimate::CarryEstimateInput<f64>;
 pub type CarryEstimateResultF32 = estimate::CarryEstimateResult<f32>;
 /// Estimate result in double precision.
 pub type CarryEstimateResultF64 = estimate::CarryEstimateResult<f64>;
+
+/// Launch-from-flight input in single precision.
+pub type CarryLaunchFromFlightInputF32 = launch_fit::CarryLaunchFromFlightInput<f32>;
+/// Launch-from-flight input in double precision.
+pub type CarryLaunchFromFlightInputF64 = launch_fit::CarryLaunchFromFlightInput<f64>;
+/// Launch-from-flight result in single precision.
+pub type CarryLaunchFromFlightResultF32 = launch_fit::CarryLaunchFromFlightResult<f32>;
+/// Launch-from-flight result in double precision.
+pub type CarryLaunchFromFlightResultF64 = launch_fit::CarryLaunchFromFlightResult<f64>;
+/// The launch fit's scratch space in single precision.
+pub type CarryLaunchFromFlightWorkspaceF32 = launch_fit::CarryLaunchFromFlightWorkspace<f32>;
+/// The launch fit's scratch space in double precision.
+pub type CarryLaunchFromFlightWorkspaceF64 = launch_fit::CarryLaunchFromFlightWorkspace<f64>;
+/// A track point in single precision.
+pub type CarryTrackPointF32 = launch_fit::CarryTrackPoint<f32>;
+/// A track point in double precision.
+pub type CarryTrackPointF64 = launch_fit::CarryTrackPoint<f64>;
+/// A Doppler sample in single precision.
+pub type CarryDopplerSampleF32 = launch_fit::CarryDopplerSample<f32>;
+/// A Doppler sample in double precision.
+pub type CarryDopplerSampleF64 = launch_fit::CarryDopplerSample<f64>;
 
 mod api;
 mod defaults;

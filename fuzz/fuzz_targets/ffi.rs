@@ -4,7 +4,10 @@
 //! success (or a full buffer) must leave finite results and a sample count within the
 //! capacity. The estimator (club data from ball data) too: arbitrary ball data, club data,
 //! noise, prior, budget and posterior selector; a success must leave finite estimates and
-//! non-negative 1σ.
+//! non-negative 1σ. The launch from the flight too (issue 36): arbitrary measured launch,
+//! summaries, track and Doppler arrays (NULL or not, past capacity), priors, budget; a
+//! success must leave a finite fit and positive 1σ, `CARRY_ERR_UNIDENTIFIABLE` a named
+//! unknown.
 //!
 //! Work bounds as the flight target's (docs/robustness.md): fixed or maximum steps below
 //! `time limit / 2e5`, updrafts that grow without bound and absurd drag scales are legal
@@ -18,7 +21,13 @@
 
 use carry_core::real::{Real, lit, to_f64};
 use carry_ffi::error::ALL;
-use carry_ffi::estimate::{CarryDeliveryData, CarryEstimateInput, CarryEstimateResult};
+use carry_ffi::estimate::{
+    CarryBallData, CarryDeliveryData, CarryEstimateInput, CarryEstimateResult,
+};
+use carry_ffi::launch_fit::{
+    CarryDopplerSample, CarryLaunchFromFlightInput, CarryLaunchFromFlightResult,
+    CarryLaunchFromFlightWorkspace, CarryTrackPoint,
+};
 use carry_ffi::scene::*;
 use carry_ffi::settings::*;
 use carry_ffi::*;
@@ -216,10 +225,16 @@ trait Api: Real + Default {
         radius: Self,
         o: *mut Self,
     ) -> CarryError;
+    unsafe fn launch_default(o: *mut CarryLaunchFromFlightInput<Self>) -> CarryError;
+    unsafe fn launch_from_flight(
+        i: *const CarryLaunchFromFlightInput<Self>,
+        w: *mut CarryLaunchFromFlightWorkspace<Self>,
+        o: *mut CarryLaunchFromFlightResult<Self>,
+    ) -> CarryError;
 }
 
 macro_rules! api {
-    ($t:ty, $i:ident, $f:ident, $s:ident, $ed:ident, $e:ident, $h:ident) => {
+    ($t:ty, $i:ident, $f:ident, $s:ident, $ed:ident, $e:ident, $h:ident, $ld:ident, $l:ident) => {
         impl Api for $t {
             unsafe fn impact(
                 i: *const CarryImpactInput<Self>,
@@ -265,6 +280,16 @@ macro_rules! api {
             ) -> CarryError {
                 unsafe { $h(name, loft, radius, o) }
             }
+            unsafe fn launch_default(o: *mut CarryLaunchFromFlightInput<Self>) -> CarryError {
+                unsafe { $ld(o) }
+            }
+            unsafe fn launch_from_flight(
+                i: *const CarryLaunchFromFlightInput<Self>,
+                w: *mut CarryLaunchFromFlightWorkspace<Self>,
+                o: *mut CarryLaunchFromFlightResult<Self>,
+            ) -> CarryError {
+                unsafe { $l(i, w, o) }
+            }
         }
     };
 }
@@ -275,7 +300,9 @@ api!(
     carry_shot_f32,
     carry_estimate_input_default_f32,
     carry_estimate_f32,
-    carry_strike_height_f32
+    carry_strike_height_f32,
+    carry_launch_from_flight_input_default_f32,
+    carry_launch_from_flight_f32
 );
 api!(
     f64,
@@ -284,7 +311,9 @@ api!(
     carry_shot_f64,
     carry_estimate_input_default_f64,
     carry_estimate_f64,
-    carry_strike_height_f64
+    carry_strike_height_f64,
+    carry_launch_from_flight_input_default_f64,
+    carry_launch_from_flight_f64
 );
 
 /// NULL (rarely) or the address of `x`.
@@ -393,6 +422,135 @@ fn estimate_op<T: Api>(b: &mut Bytes<'_>) -> CarryError {
     code
 }
 
+fn launch_values<T: Real>(b: &mut Bytes<'_>, v: &mut CarryBallData<T>, scale: f64) {
+    v.ball_speed_mps = f(b, -5.0 * scale, 90.0 * scale);
+    v.launch_angle_rad = f(b, -0.5 * scale, 1.0 * scale);
+    v.launch_direction_rad = f(b, -0.3 * scale, 0.3 * scale);
+    v.spin_radps = f(b, -100.0 * scale, 1200.0 * scale);
+    v.spin_axis_rad = f(b, -0.8 * scale, 0.8 * scale);
+}
+
+/// One launch fit from the defaults with arbitrary measurements, observations and arrays.
+fn launch_from_flight_op<T: Api>(b: &mut Bytes<'_>) -> CarryError {
+    let mut i = core::mem::MaybeUninit::uninit();
+    // SAFETY: a writable struct.
+    let code = unsafe { T::launch_default(i.as_mut_ptr()) };
+    assert_eq!(code, CarryError::CARRY_OK);
+    // SAFETY: written on CARRY_OK.
+    let mut i: CarryLaunchFromFlightInput<T> = unsafe { i.assume_init() };
+    i.measured = u32::from(b.byte());
+    launch_values(b, &mut i.measured_launch, 1.0);
+    if b.flag() {
+        launch_values(b, &mut i.measured_sd, 0.01);
+    }
+    i.observed = u32::from(b.byte());
+    let s = &mut i.summaries;
+    s.apex_height_m = f(b, -5.0, 60.0);
+    s.apex_time_s = f(b, -1.0, 6.0);
+    s.carry_m = f(b, -10.0, 320.0);
+    s.side_m = f(b, -60.0, 60.0);
+    s.flight_time_s = f(b, -1.0, 12.0);
+    s.land_angle_rad = f(b, -0.5, 1.6);
+    if b.flag() {
+        let sd = &mut i.summaries_sd;
+        sd.apex_height_m = f(b, -0.1, 5.0);
+        sd.carry_m = f(b, -0.1, 5.0);
+        sd.side_m = f(b, -0.1, 5.0);
+        sd.flight_time_s = f(b, -0.1, 1.0);
+        sd.land_angle_rad = f(b, -0.01, 0.1);
+    }
+    // a track along a straight climb with noise, a Doppler trace; lengths past capacity
+    // and NULL arrays with lengths sometimes
+    let n_track = usize::from(b.byte() % 72);
+    let dt: f64 = b.param(0.001, 0.2);
+    let track: Vec<CarryTrackPoint<T>> = (0..n_track)
+        .map(|k| {
+            let t = dt * (k as f64 + 1.0);
+            CarryTrackPoint {
+                time_s: lit(t),
+                position_m: [lit(60.0 * t), lit(15.0 * t - 4.9 * t * t), lit(0.0)]
+                    .map(|x: T| x + f(b, -0.3, 0.3)),
+                sd_m: f(b, 0.0, 0.5),
+            }
+        })
+        .collect();
+    let n_doppler = usize::from(b.byte()) + if b.flag() { 8 } else { 0 };
+    let n_doppler = if b.flag() { n_doppler } else { 0 };
+    let doppler: Vec<CarryDopplerSample<T>> = (0..n_doppler)
+        .map(|k| CarryDopplerSample {
+            time_s: lit(0.01 * (k as f64 + 1.0)),
+            radial_speed_mps: lit(70.0 - 5.0 * 0.01 * k as f64),
+            sd_mps: lit(0.1),
+        })
+        .collect();
+    i.track = if b.byte() < 8 { null() } else { track.as_ptr() };
+    i.track_len = track.len();
+    i.doppler = if b.byte() < 8 {
+        null()
+    } else {
+        doppler.as_ptr()
+    };
+    i.doppler_len = doppler.len();
+    i.radar_position_m = a3(b, -5.0, 5.0);
+    if b.flag() {
+        launch_values(b, &mut i.prior_mean, 1.0);
+        launch_values(b, &mut i.prior_sd, 0.1);
+        i.wind_prior_sd_mps = f(b, -1.0, 10.0);
+        i.air_density_prior_sd_kgm3 = f(b, -0.01, 0.2);
+    }
+    i.fit_wind = u32::from(b.flag());
+    i.fit_air_density = u32::from(b.flag());
+    i.max_iterations = u32::from(b.byte() % 40);
+    i.scene.aero = selector(b, 2);
+    i.settings.integrator = selector(b, 3);
+    if i.settings.integrator != CARRY_INTEGRATOR_DP45 {
+        // fixed steps of 5 ms or coarser: bounded work
+        i.settings.step_s = f(b, 5e-3, 0.05);
+    }
+    let mut w = Box::new(CarryLaunchFromFlightWorkspace {
+        scratch: [T::zero(); carry_ffi::launch_fit::CARRY_LAUNCH_FIT_WORKSPACE_LEN],
+    });
+    let mut o = CarryLaunchFromFlightResult::<T>::refused(0);
+    let ip = if b.byte() < 4 { null() } else { &i as *const _ };
+    let wp = ptr_or_null(b, &mut *w);
+    let op = ptr_or_null(b, &mut o);
+    // SAFETY: NULL or live values; the arrays hold their lengths' elements or are NULL.
+    let code = unsafe { T::launch_from_flight(ip, wp, op) };
+    if code == CarryError::CARRY_OK {
+        let v = [
+            o.value.ball_speed_mps,
+            o.value.launch_angle_rad,
+            o.value.launch_direction_rad,
+            o.value.spin_radps,
+            o.value.spin_axis_rad,
+            o.chi2,
+            o.flight.carry_m,
+        ];
+        assert!(finite(&v), "non-finite launch fit: {o:?}");
+        let sd = [
+            o.sd.ball_speed_mps,
+            o.sd.launch_angle_rad,
+            o.sd.launch_direction_rad,
+            o.sd.spin_radps,
+            o.sd.spin_axis_rad,
+        ];
+        assert!(
+            sd.iter()
+                .all(|s| to_f64(*s) > 0.0 && to_f64(*s).is_finite()),
+            "bad 1σ: {o:?}"
+        );
+        assert_eq!(o.unidentified, carry_ffi::launch_fit::CARRY_DATUM_NONE);
+    }
+    if code == CarryError::CARRY_ERR_UNIDENTIFIABLE {
+        assert_ne!(
+            o.unidentified,
+            carry_ffi::launch_fit::CARRY_DATUM_NONE,
+            "{o:?}"
+        );
+    }
+    code
+}
+
 fn run<T: Api>(b: &mut Bytes<'_>) {
     let mut samples = vec![CarrySample::<T>::default(); 16];
     let capacity = usize::from(b.byte() % 17);
@@ -405,17 +563,20 @@ fn run<T: Api>(b: &mut Bytes<'_>) {
     let mut count = usize::MAX;
     let np = ptr_or_null(b, &mut count);
     // 252..=255 (which chose the three others before the estimator was added) estimate,
-    // 248..=251 the named-club strike height
+    // 248..=251 the named-club strike height, 244..=247 the launch from the flight
     let op = b.byte();
     let code = match if op >= 252 {
         3
     } else if op >= 248 {
         4
+    } else if op >= 244 {
+        5
     } else {
         op % 3
     } {
         3 => estimate_op::<T>(b),
         4 => strike_height_op::<T>(b),
+        5 => launch_from_flight_op::<T>(b),
         0 => {
             let mut i = CarryImpactInput::<T>::default();
             mutate_club(b, &mut i.club);

@@ -74,11 +74,21 @@ fn run<T: Real>(b: &mut Bytes<'_>) -> Result<()> {
         settings.prior.mean.spin_axis_rad = lit(b.param(-2.0, 2.0));
     }
     let mut ws = Box::new(Workspace::<T>::new());
-    let f = fit_launch(&Ball::standard(), &Scene::default(), &measured, &obs, &settings, &mut ws)?;
+    let f = fit_launch(
+        &Ball::standard(),
+        &Scene::default(),
+        &measured,
+        &obs,
+        &settings,
+        &mut ws,
+    )?;
     for v in f.value.to_array().into_iter().chain(f.sd.to_array()) {
         assert!(v.is_finite(), "non-finite fit {f:?}");
     }
-    assert!(f.sd.to_array().iter().all(|s| *s >= T::zero()), "negative 1σ {f:?}");
+    assert!(
+        f.sd.to_array().iter().all(|s| *s >= T::zero()),
+        "negative 1σ {f:?}"
+    );
     assert!(f.chi2.is_finite() && f.chi2 >= T::zero());
     assert!(f.iterations <= settings.max_iterations);
     Ok(())

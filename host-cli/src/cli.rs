@@ -485,6 +485,9 @@ pub enum BatchCmd {
     },
     /// Many estimates of club data from ball data: launch columns (+ any measured club
     /// columns) → face_angle_deg, club_path_deg, dynamic_loft_deg, … each with *_sd.
+    /// With `--from flight`: flight columns (apex_height, carry, side, flight_time,
+    /// land_angle, … each with an optional *_sd; any measured launch columns) → spin_rpm,
+    /// spin_axis_deg, … each with *_sd and *_source, the fitted flight and chi2.
     #[command(after_help = AFTER_HELP)]
     Estimate {
         #[command(flatten)]

@@ -220,6 +220,11 @@ pub struct FlightRecord {
     pub flight_time_s: f64,
     /// Landing angle (°).
     pub land_angle_deg: f64,
+    /// Total (tee to rest, m) of the fitted launch on the scene's ground, when it names one
+    /// (`--ground`, a `ground` column): the launch flown once more through io's run.
+    pub total_m: Option<f64>,
+    /// Roll (first landing to rest, m), with `total_m`.
+    pub roll_m: Option<f64>,
     /// χ² of the flight observations at the fit, and their number.
     pub chi2: f64,
     /// Flight observations used.
@@ -359,6 +364,11 @@ fn fit_in<T: Real>(p: &Params, n: &Numerics, r: &FlightRequest) -> Result<Flight
     let degrees = f64::to_degrees;
     let to_rpm = |v: f64| v * 60.0 / std::f64::consts::TAU;
     let same = |v: f64| v;
+    let ground = if p.scene.ground.is_empty() {
+        None
+    } else {
+        on_the_ground(p, n, &f)?
+    };
     Ok(FlightRecord {
         launch: LaunchFigures([
             figure(
@@ -401,6 +411,8 @@ fn fit_in<T: Real>(p: &Params, n: &Numerics, r: &FlightRequest) -> Result<Flight
         apex_m: to_f64(f.flight.apex_m),
         flight_time_s: to_f64(f.flight.flight_time_s),
         land_angle_deg: degrees(to_f64(f.flight.landing_angle_rad)),
+        total_m: ground.map(|g| g.total_m),
+        roll_m: ground.map(|g| g.roll_m),
         chi2: to_f64(f.chi2),
         observations: f.observations,
         worst_observation: observed_name(f.worst_observation),
@@ -408,6 +420,154 @@ fn fit_in<T: Real>(p: &Params, n: &Numerics, r: &FlightRequest) -> Result<Flight
         iterations: f.iterations,
         flights: f.flights,
     })
+}
+
+/// The fitted launch flown once more through io's run in `p`'s scene with its ground (the
+/// fitted wind and air density in place of the scene's when they were fitted): its rest.
+fn on_the_ground<T: Real>(
+    p: &Params,
+    n: &Numerics,
+    f: &lf::LaunchFit<T>,
+) -> Result<Option<carry_io::report::GroundReport>, Failure> {
+    let mut q = *p;
+    let v = &f.value;
+    q.launch.ball_speed_mps = to_f64(v.ball_speed_mps);
+    q.launch.launch_angle_deg = to_f64(v.launch_angle_rad).to_degrees();
+    q.launch.launch_direction_deg = to_f64(v.launch_direction_rad).to_degrees();
+    q.launch.spin_rpm = Some(to_f64(v.spin_radps) * 60.0 / std::f64::consts::TAU);
+    q.launch.spin_axis_deg = Some(to_f64(v.spin_axis_rad).to_degrees());
+    q.launch.backspin_rpm = None;
+    q.launch.sidespin_rpm = None;
+    if let Some([x, z]) = f.wind_mps {
+        q.scene.wind_mps = Some([to_f64(x.value), 0.0, to_f64(z.value)]);
+        q.scene.wind_speed_mps = None;
+        q.scene.wind_direction_deg = None;
+        q.scene.wind_reference_height_m = None;
+        q.scene.wind_exponent = None;
+    }
+    if let Some(rho) = f.air_density_kgm3 {
+        q.scene.air_density_kgm3 = Some(to_f64(rho.value));
+    }
+    let r = compute::run(compute::Mode::Flight, &q, n)?;
+    Ok(r.flight.and_then(|g| g.ground))
+}
+
+impl FlightRecord {
+    /// The CSV columns of `carry batch estimate --from flight` (after `line` and `label`,
+    /// before `error`), in the order of [`Self::cells`]: each launch figure with `_sd` and
+    /// `_source`, the fitted wind and air density (empty unless fitted), the fitted launch's
+    /// flight (`total_m`, `roll_m` empty without a ground), the fit's statistics.
+    pub const COLUMNS: [&'static str; 34] = [
+        "ball_speed_mps",
+        "ball_speed_mps_sd",
+        "ball_speed_mps_source",
+        "launch_angle_deg",
+        "launch_angle_deg_sd",
+        "launch_angle_deg_source",
+        "launch_direction_deg",
+        "launch_direction_deg_sd",
+        "launch_direction_deg_source",
+        "spin_rpm",
+        "spin_rpm_sd",
+        "spin_rpm_source",
+        "spin_axis_deg",
+        "spin_axis_deg_sd",
+        "spin_axis_deg_source",
+        "wind_x_mps",
+        "wind_x_mps_sd",
+        "wind_z_mps",
+        "wind_z_mps_sd",
+        "air_density_kgm3",
+        "air_density_kgm3_sd",
+        "carry_m",
+        "side_m",
+        "apex_m",
+        "flight_time_s",
+        "land_angle_deg",
+        "total_m",
+        "roll_m",
+        "chi2",
+        "observations",
+        "worst_observation",
+        "worst_residual_sigma",
+        "iterations",
+        "flights",
+    ];
+
+    /// The record as CSV cells (unquoted text) in the order of [`Self::COLUMNS`]: numbers
+    /// in their shortest round-trip form, absent values empty.
+    #[must_use]
+    pub fn cells(&self) -> Vec<String> {
+        let num = |v: f64| {
+            if v.is_finite() {
+                format!("{v}")
+            } else {
+                String::new()
+            }
+        };
+        let opt = |v: Option<f64>| v.map_or(String::new(), num);
+        let mut c = Vec::with_capacity(Self::COLUMNS.len());
+        for f in &self.launch.0 {
+            c.push(num(f.value));
+            c.push(num(f.sd));
+            c.push(f.source.to_owned());
+        }
+        let [wx, wz] = self.wind_mps.map_or([None; 2], |w| w.map(Some));
+        for w in [wx, wz] {
+            c.push(opt(w.map(|w| w.0)));
+            c.push(opt(w.map(|w| w.1)));
+        }
+        c.push(opt(self.air_density_kgm3.map(|d| d.0)));
+        c.push(opt(self.air_density_kgm3.map(|d| d.1)));
+        for v in [
+            self.carry_m,
+            self.side_m,
+            self.apex_m,
+            self.flight_time_s,
+            self.land_angle_deg,
+        ] {
+            c.push(num(v));
+        }
+        c.push(opt(self.total_m));
+        c.push(opt(self.roll_m));
+        c.push(num(self.chi2));
+        c.push(self.observations.to_string());
+        c.push(self.worst_observation.clone());
+        c.push(num(self.worst_residual_sigma));
+        c.push(self.iterations.to_string());
+        c.push(self.flights.to_string());
+        c
+    }
+}
+
+/// [`fit`] over many rows in parallel on `threads` workers (`None`: all cores), each row
+/// the parameters (scene, ball) and the request of one shot, or the error its input had;
+/// the results in row order (`carry batch estimate --from flight`, Python's
+/// `carry.launch_from_flight` over arrays).
+///
+/// # Errors
+/// The thread pool cannot start.
+pub fn fit_rows(
+    rows: &[Result<(Params, FlightRequest), InputError>],
+    n: &Numerics,
+    threads: Option<usize>,
+) -> Result<Vec<Result<FlightRecord, InputError>>, Failure> {
+    use rayon::prelude::*;
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads.unwrap_or(0))
+        .build()
+        .map_err(|e| Failure::Other(e.to_string()))?;
+    Ok(pool.install(|| {
+        rows.par_iter()
+            .map(|row| {
+                let (p, r) = row.as_ref().map_err(Clone::clone)?;
+                fit(p, n, r).map_err(|e| match e {
+                    Failure::Input(e) => e,
+                    other => InputError::new("launch_fit", format!("{other:?}")),
+                })
+            })
+            .collect()
+    }))
 }
 
 /// The core's errors of the fit, naming the option that can fix them.

@@ -375,7 +375,14 @@ fn launch_fit_paths<T: Real>() -> T {
         ..Settings::default()
     };
     let mut ws = Workspace::<T>::new();
-    match fit_launch(&Ball::standard(), &Scene::default(), &measured, &obs, &settings, &mut ws) {
+    match fit_launch(
+        &Ball::standard(),
+        &Scene::default(),
+        &measured,
+        &obs,
+        &settings,
+        &mut ws,
+    ) {
         Ok(f) => f.value.spin_radps + f.sd.spin_axis_rad,
         Err(_) => T::one(),
     }

@@ -8,6 +8,9 @@ called from Python:
 * :func:`shot` — delivery → launch → flight (``carry shot``),
 * :func:`estimate` — ball data → club data, the impact model run backwards
   (``carry estimate``),
+* :func:`launch_from_flight` — the launch quantities a monitor did not measure (spin, axis,
+  …) fitted to what it saw of the flight: summaries, a track, a Doppler trace
+  (``carry estimate --from flight``),
 * :func:`fit` — fit an aerodynamic model or contact law to measured shots (``carry fit``),
 * :func:`optimize`, :func:`sweep`, :func:`dispersion`, :func:`normalize` — the analyses
   (``carry optimize``, …): the best delivery, the ball position along a swing, Monte-Carlo
@@ -44,7 +47,7 @@ from . import _carry
 
 __all__ = [
     "impact", "flight", "shot", "estimate", "fit", "optimize", "sweep", "dispersion", "normalize",
-    "columns", "inputs", "ShotError",
+    "launch_from_flight", "columns", "inputs", "ShotError", "LaunchFitError",
 ]
 __version__ = "0.1.0"
 
@@ -62,6 +65,19 @@ class ShotError(ValueError):
         # A scalar call has one row and no index to name.
         super().__init__(f"row {index}: {message}" if index else message)
         self.index = index
+        self.message = message
+
+
+class LaunchFitError(ValueError):
+    """:func:`launch_from_flight` refused: bad input, too few observations, a quantity the
+    observations do not determine, no convergence. :attr:`option` names what to fix as the
+    CLI does (``"--spin-axis"``, ``"--carry"``, ``"--apex-height, --carry, …, --track"``),
+    :attr:`message` says why."""
+
+    def __init__(self, text: str) -> None:
+        super().__init__(text)
+        option, _, message = text.partition(": ")
+        self.option = option
         self.message = message
 
 
@@ -385,3 +401,61 @@ def normalize(**kwargs: _Any) -> _Dict[str, _Any]:
     the given ones, as ``carry normalize --json``: the launch options, the conditions and
     ``to="standard"`` (default) or ``"conditions"``."""
     return _analysis("normalize", kwargs)
+
+
+def launch_from_flight(
+    *,
+    t: _Any = None,
+    x: _Any = None,
+    y: _Any = None,
+    z: _Any = None,
+    radial_speed: _Any = None,
+    **kwargs: _Any,
+) -> _Dict[str, _Any]:
+    """The launch from the flight (issue 36, docs/launch_fit.md), as ``carry estimate
+    --from flight --json``: the launch quantities not given — by default ``spin`` and
+    ``spin_axis`` — fitted to the observations, each with its 1σ and its source.
+
+    Keywords (the CLI's options, in ``units``): the measured launch ``ball_speed``,
+    ``launch_angle``, ``launch_direction``, ``spin``, ``spin_axis`` (given: measured; not
+    given: fitted) and the summaries ``apex_height``, ``apex_time``, ``carry``, ``side``,
+    ``flight_time``, ``land_angle`` (degrees), each with an optional ``<name>_sd`` (1σ; the
+    CLI's defaults otherwise); ``fit_wind=True``, ``fit_air_density=True``; the scene and
+    ball options (``air_density``, ``temperature``, ``aero``, ``ground``, …),
+    ``precision``. A track: numpy arrays ``t`` (s) with ``x``, ``y``, ``z`` (m, the shot's
+    frame, the tee at the origin; at most 64 points) or with ``radial_speed`` (m/s away from
+    the radar at ``radar_position``, default ``(-2.5, 0.3, 0)``; at most 256), always SI,
+    each with 1σ ``track_sd``.
+
+    Returns a dict: ``ball_speed_mps``, ``launch_angle_deg``, ``launch_direction_deg``,
+    ``spin_rpm``, ``spin_axis_deg``, each with ``_sd`` and ``_source`` (``"measured"`` or
+    ``"fitted to the flight"``); ``wind_mps``, ``air_density_kgm3`` (``None`` unless
+    fitted); the fitted launch's ``carry_m``, ``side_m``, ``apex_m``, ``flight_time_s``,
+    ``land_angle_deg`` (and ``total_m``, ``roll_m`` with a ``ground``); ``chi2``,
+    ``observations``, ``worst_observation``, ``worst_residual_sigma``, ``iterations``,
+    ``flights``. Raises :class:`LaunchFitError` (a ``ValueError``) naming the option.
+    """
+    options = []
+    for name, value in kwargs.items():
+        if name in ("json", "csv", "track"):
+            raise LaunchFitError(
+                f"--{name.replace('_', '-')}: the Python function takes the track as arrays "
+                "(t with x, y, z or radial_speed) and returns the JSON record")
+        if value is None or value is False:
+            continue
+        options.append((name, "true" if value is True else _option_value(name, value)))
+
+    def column(name: str, v: _Any) -> _Any:
+        if v is None:
+            return None
+        a = _np.asarray(v)
+        if a.dtype.kind not in "biuf":
+            raise LaunchFitError(f"--{name.replace('_', '-')}: expected an array of numbers")
+        return _np.ascontiguousarray(a, dtype=_np.float64).ravel()
+
+    arrays = {name: column(name, v) for name, v in
+              (("t", t), ("x", x), ("y", y), ("z", z), ("radial_speed", radial_speed))}
+    try:
+        return _carry.launch_from_flight(options, **arrays)
+    except ValueError as e:
+        raise LaunchFitError(str(e)) from None

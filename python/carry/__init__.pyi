@@ -249,3 +249,34 @@ def dispersion(**kwargs: Any) -> Dict[str, Any]:
 def normalize(**kwargs: Any) -> Dict[str, Any]:
     """``carry normalize --json`` with ``kwargs`` as its options (snake_case)."""
     ...
+
+
+class LaunchFitError(ValueError):
+    option: str
+    message: str
+    def __init__(self, text: str) -> None: ...
+
+def launch_from_flight(
+    *,
+    t: _Num | None = ...,
+    x: _Num | None = ...,
+    y: _Num | None = ...,
+    z: _Num | None = ...,
+    radial_speed: _Num | None = ...,
+    ball_speed: float | None = ...,
+    launch_angle: float | None = ...,
+    launch_direction: float | None = ...,
+    spin: float | None = ...,
+    spin_axis: float | None = ...,
+    apex_height: float | None = ...,
+    apex_time: float | None = ...,
+    carry: float | None = ...,
+    side: float | None = ...,
+    flight_time: float | None = ...,
+    land_angle: float | None = ...,
+    track_sd: float | None = ...,
+    radar_position: _Vec | None = ...,
+    fit_wind: bool = ...,
+    fit_air_density: bool = ...,
+    **kwargs: Any,
+) -> Dict[str, Any]: ...

@@ -13,6 +13,7 @@ mod analyses;
 mod args;
 mod estimate;
 mod fit;
+mod launch_fit;
 mod rows;
 
 use numpy::{PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray1};
@@ -182,6 +183,55 @@ fn analysis(
     Ok((to_py(py, &doc)?.unbind(), notes))
 }
 
+fn slice<'a>(name: &str, a: &'a Option<PyReadonlyArray1<'_, f64>>) -> PyResult<Option<&'a [f64]>> {
+    a.as_ref()
+        .map(|a| {
+            a.as_slice()
+                .map_err(|_| PyValueError::new_err(format!("{name}: not a contiguous array")))
+        })
+        .transpose()
+}
+
+/// The launch from the flight (issue 36) with `options` ((name, text) pairs: the summaries,
+/// the measured launch, their `_sd`, the scene; flags as `true`) and the track arrays `t`
+/// with `x`, `y`, `z` or with `radial_speed`; returns the record `carry estimate --from
+/// flight --json` prints. Invalid input or a fit the data do not determine raises
+/// `ValueError` with the CLI's one line (naming the option).
+#[pyfunction]
+#[pyo3(signature = (options, t=None, x=None, y=None, z=None, radial_speed=None))]
+#[allow(clippy::needless_pass_by_value)]
+fn launch_from_flight(
+    py: Python<'_>,
+    options: Vec<(String, String)>,
+    t: Option<PyReadonlyArray1<'_, f64>>,
+    x: Option<PyReadonlyArray1<'_, f64>>,
+    y: Option<PyReadonlyArray1<'_, f64>>,
+    z: Option<PyReadonlyArray1<'_, f64>>,
+    radial_speed: Option<PyReadonlyArray1<'_, f64>>,
+) -> PyResult<Py<PyAny>> {
+    let xyz = match (slice("x", &x)?, slice("y", &y)?, slice("z", &z)?) {
+        (Some(x), Some(y), Some(z)) => Some([x, y, z]),
+        (None, None, None) => None,
+        _ => {
+            return Err(PyValueError::new_err(
+                "--x, --y, --z: give all three or none",
+            ));
+        }
+    };
+    let arrays = launch_fit::Arrays {
+        t: slice("t", &t)?,
+        xyz,
+        radial_speed: slice("radial_speed", &radial_speed)?,
+    };
+    let doc = py
+        .detach(|| launch_fit::run(&options, &arrays))
+        .map_err(|e| match e {
+            analyses::AnalysisError::Input(m) => PyValueError::new_err(m),
+            analyses::AnalysisError::Failed(m) => PyRuntimeError::new_err(m),
+        })?;
+    Ok(to_py(py, &doc)?.unbind())
+}
+
 /// The native module.
 #[pymodule]
 fn _carry(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -190,6 +240,7 @@ fn _carry(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(columns, m)?)?;
     m.add_function(wrap_pyfunction!(fit_csv, m)?)?;
     m.add_function(wrap_pyfunction!(analysis, m)?)?;
+    m.add_function(wrap_pyfunction!(launch_from_flight, m)?)?;
     m.add("ARG_SETTINGS", args::SETTINGS.to_vec())?;
     Ok(())
 }

@@ -427,8 +427,10 @@ impl<T: Real> LaunchFit<T> {
 
 /// The solver's scratch space: the Jacobian's columns and the residuals (caller-owned, so
 /// a microcontroller can place it in static memory: `(UNKNOWNS + 4)·MAX_ROWS` numbers,
-/// 21 KiB in `f32`).
+/// 21 KiB in `f32`). `repr(C)`: nothing but `T` arrays, so it is laid out as
+/// `[T; (UNKNOWNS + 4) · MAX_ROWS]` and the C API can hand over caller memory of that shape.
 #[derive(Debug, Clone)]
+#[repr(C)]
 pub struct Workspace<T> {
     pub(crate) columns: [[T; MAX_ROWS]; UNKNOWNS],
     pub(crate) residual: [T; MAX_ROWS],

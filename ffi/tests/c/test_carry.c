@@ -139,6 +139,71 @@ static void presets(void) {
     CHECK_CODE(carry_strike_height_f32("7iron", 0.3f, 0.021336f, NULL), CARRY_ERR_NULL_POINTER);
 }
 
+/* Issue 36: a known launch flown forward, its spin and axis fitted back from the flight's
+ * summaries within 1σ, with the measured ball speed and angles; the error codes. */
+static CarryLaunchFromFlightWorkspaceF64 launch_fit_scratch; /* caller-owned, 43 KiB */
+
+static void launch_from_flight(void) {
+    CarryFlightInputF64 fin;
+    CarryFlightResultF64 fout;
+    const double spin = carry_rpm_to_radps_f64(2800.0), axis = carry_deg_to_rad_f64(5.0);
+    CHECK_CODE(carry_flight_input_default_f64(&fin), CARRY_OK);
+    fin.launch.ball_speed_mps = 70.0;
+    fin.launch.launch_angle_rad = carry_deg_to_rad_f64(12.0);
+    fin.launch.launch_direction_rad = 0.0;
+    fin.launch.backspin_radps = spin * cos(axis);
+    fin.launch.sidespin_radps = spin * sin(axis);
+    CHECK_CODE(carry_flight_f64(&fin, NULL, 0, NULL, &fout), CARRY_OK);
+
+    CarryLaunchFromFlightInputF64 in;
+    CarryLaunchFromFlightResultF64 out;
+    CHECK_CODE(carry_launch_from_flight_input_default_f64(&in), CARRY_OK);
+    in.measured = CARRY_MEASURED_BALL_SPEED | CARRY_MEASURED_LAUNCH_ANGLE |
+                  CARRY_MEASURED_LAUNCH_DIRECTION;
+    in.measured_launch.ball_speed_mps = 70.0;
+    in.measured_launch.launch_angle_rad = carry_deg_to_rad_f64(12.0);
+    in.measured_launch.launch_direction_rad = 0.0;
+    in.observed = CARRY_OBSERVED_APEX_HEIGHT | CARRY_OBSERVED_CARRY | CARRY_OBSERVED_SIDE |
+                  CARRY_OBSERVED_FLIGHT_TIME | CARRY_OBSERVED_LAND_ANGLE;
+    in.summaries.apex_height_m = fout.apex_m;
+    in.summaries.carry_m = fout.carry_m;
+    in.summaries.side_m = fout.side_m;
+    in.summaries.flight_time_s = fout.flight_time_s;
+    in.summaries.land_angle_rad = fout.landing_angle_rad;
+    CHECK_CODE(carry_launch_from_flight_f64(&in, &launch_fit_scratch, &out), CARRY_OK);
+    CHECK(fabs(out.value.spin_radps - spin) < out.sd.spin_radps);
+    CHECK(fabs(out.value.spin_axis_rad - axis) < out.sd.spin_axis_rad);
+    CHECK(out.source.spin == CARRY_SOURCE_FITTED && out.source.spin_axis == CARRY_SOURCE_FITTED);
+    CHECK(out.source.ball_speed == CARRY_SOURCE_MEASURED);
+    CHECK(out.observations == 5 && out.flights > 0 && isfinite(out.chi2));
+    CHECK(fabs(out.flight.carry_m - fout.carry_m) < 1.0);
+    /* a track array of three points past its capacity, a NULL array, too few data */
+    CarryTrackPointF64 track[CARRY_LAUNCH_FIT_MAX_TRACK_POINTS + 1];
+    memset(track, 0, sizeof track);
+    CarryLaunchFromFlightInputF64 bad = in;
+    bad.track = track;
+    bad.track_len = CARRY_LAUNCH_FIT_MAX_TRACK_POINTS + 1;
+    CHECK_CODE(carry_launch_from_flight_f64(&bad, &launch_fit_scratch, &out),
+               CARRY_ERR_TOO_MANY_OBSERVATIONS);
+    bad.track = NULL;
+    bad.track_len = 3;
+    CHECK_CODE(carry_launch_from_flight_f64(&bad, &launch_fit_scratch, &out),
+               CARRY_ERR_NULL_POINTER);
+    bad = in;
+    bad.observed = CARRY_OBSERVED_CARRY;
+    CHECK_CODE(carry_launch_from_flight_f64(&bad, &launch_fit_scratch, &out),
+               CARRY_ERR_TOO_FEW_OBSERVATIONS);
+    bad = in;
+    bad.observed = CARRY_OBSERVED_APEX_HEIGHT | CARRY_OBSERVED_CARRY | CARRY_OBSERVED_FLIGHT_TIME;
+    bad.summaries.apex_height_m = 31.9;
+    bad.summaries.carry_m = 222.4;
+    bad.summaries.flight_time_s = 6.7;
+    CHECK_CODE(carry_launch_from_flight_f64(&bad, &launch_fit_scratch, &out),
+               CARRY_ERR_UNIDENTIFIABLE);
+    CHECK(out.unidentified == CARRY_DATUM_SPIN_AXIS);
+    CHECK_CODE(carry_launch_from_flight_f64(&in, NULL, &out), CARRY_ERR_NULL_POINTER);
+}
+
 static void bad_input(void) {
     CarryShotInputF32 in;
     CarryShotResultF32 out;
@@ -166,7 +231,7 @@ static void bad_input(void) {
     CHECK_CODE(carry_impact_f64(&imp, NULL), CARRY_ERR_NULL_POINTER);
     CHECK_CODE(carry_scene_default_f64(NULL), CARRY_ERR_NULL_POINTER);
     /* Every code has a message; unknown codes too. */
-    for (int code = CARRY_OK; code <= CARRY_ERR_INCONSISTENT; ++code) {
+    for (int code = CARRY_OK; code <= CARRY_ERR_TOO_MANY_OBSERVATIONS; ++code) {
         const char *m = carry_error_message((uint32_t)code);
         CHECK(m != NULL && m[0] != 0);
     }
@@ -190,6 +255,7 @@ int main(int argc, char **argv) {
     defaults_and_trajectory();
     presets();
     bad_input();
+    launch_from_flight();
     printf("test_carry: %d golden runs bit-identical to the host Rust results (%d differ); "
            "%d failures in all\n", runs, golden_failures, failures);
     return failures == 0 ? 0 : 1;

@@ -189,7 +189,8 @@ const CLUB_COLUMNS: [(&str, bool, usize); 10] = [
     ("dynamic_loft_deg", true, 4),
 ];
 
-fn csv_text(text: &str) -> String {
+/// A CSV cell: quoted when it holds a comma, a quote or a line break.
+pub(crate) fn csv_text(text: &str) -> String {
     if text.contains([',', '"', '\n', '\r']) {
         format!("\"{}\"", text.replace('"', "\"\""))
     } else {
@@ -209,6 +210,9 @@ pub fn batch(args: &crate::cli::BatchArgs, cmd: &EstimateCmd) -> Result<(), Fail
     use carry_io::batch::Columns;
     use carry_io::compute::Mode;
     use carry_io::error::InputError;
+    if cmd.from == EstimateFrom::Flight {
+        return super::from_flight::batch(args, cmd);
+    }
     let u = cmd.output.units;
     let mut base = Params::default();
     cmd.club.apply(&mut base, u);

@@ -257,6 +257,14 @@ fn table(r: &FlightRecord, u: Units) -> String {
         r.flight_time_s,
         r.land_angle_deg
     );
+    if let (Some(total), Some(roll)) = (r.total_m, r.roll_m) {
+        let _ = writeln!(
+            s,
+            "on the ground: total {:.1} {lu}, roll {:.1} {lu}",
+            u.to_display(Quantity::Long, total),
+            u.to_display(Quantity::Long, roll)
+        );
+    }
     let _ = writeln!(
         s,
         "χ² {:.2} over {} observations (worst: {}, {:+.2} σ); {} iterations, {} flights",
@@ -268,4 +276,301 @@ fn table(r: &FlightRecord, u: Units) -> String {
         r.flights
     );
     s
+}
+
+/// What a flight column of `carry batch estimate --from flight` sets: a launch figure or
+/// a summary (index into [`FIELDS`]), its value or its 1σ.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Part {
+    Value,
+    Sd,
+}
+
+/// The launch figures and summaries a row may give: (option name, SI output name, the
+/// quantity of the option's unit under `--units`).
+const FIELDS: [(&str, &str, Quantity); 11] = [
+    ("ball_speed", "ball_speed_mps", Quantity::Speed),
+    ("launch_angle", "launch_angle_deg", Quantity::Plain),
+    ("launch_direction", "launch_direction_deg", Quantity::Plain),
+    ("spin", "spin_rpm", Quantity::Plain),
+    ("spin_axis", "spin_axis_deg", Quantity::Plain),
+    ("apex_height", "apex_m", Quantity::Height),
+    ("apex_time", "apex_time_s", Quantity::Plain),
+    ("carry", "carry_m", Quantity::Long),
+    ("side", "side_m", Quantity::Long),
+    ("flight_time", "flight_time_s", Quantity::Plain),
+    ("land_angle", "land_angle_deg", Quantity::Plain),
+];
+
+/// The column `name` as (field, value or 1σ, SI?): `carry`, `carry_sd` (in `--units`),
+/// `carry_m`, `carry_m_sd` (SI, as another batch writes them).
+fn flight_column(name: &str) -> Option<(usize, Part, bool)> {
+    FIELDS.iter().enumerate().find_map(|(i, (opt, si, _))| {
+        let sd = |base: &str| name.strip_suffix("_sd").is_some_and(|n| n == base);
+        if name == *opt {
+            Some((i, Part::Value, false))
+        } else if sd(opt) {
+            Some((i, Part::Sd, false))
+        } else if name == *si {
+            Some((i, Part::Value, true))
+        } else if sd(si) {
+            Some((i, Part::Sd, true))
+        } else {
+            None
+        }
+    })
+}
+
+/// The request's `Given` of field `i`.
+fn given_mut(r: &mut FlightRequest, i: usize) -> Option<&mut lf::Given> {
+    Some(match i {
+        0 => &mut r.ball_speed_mps,
+        1 => &mut r.launch_angle_deg,
+        2 => &mut r.launch_direction_deg,
+        3 => &mut r.spin_rpm,
+        4 => &mut r.spin_axis_deg,
+        5 => &mut r.apex_height_m,
+        6 => &mut r.apex_time_s,
+        7 => &mut r.carry_m,
+        8 => &mut r.side_m,
+        9 => &mut r.flight_time_s,
+        10 => &mut r.land_angle_deg,
+        _ => return None,
+    })
+}
+
+/// `carry batch estimate --from flight`: one launch fit per input row, in parallel (the
+/// same lab request as `carry estimate --from flight`). Input columns: the flight
+/// summaries `apex_height, apex_time, carry, side, flight_time, land_angle` and the
+/// measured launch `ball_speed, launch_angle, launch_direction, spin, spin_axis` (option
+/// names: values in `--units`, angles in degrees, spin in rpm; or another batch's SI
+/// output names `apex_m, apex_time_s, carry_m, side_m, flight_time_s, land_angle_deg,
+/// ball_speed_mps, launch_angle_deg, …`), each with an optional `*_sd` column (its 1σ,
+/// same unit); a launch figure given is measured, one not given is fitted. A `track`
+/// column names a track CSV per row (relative to the input file's directory). The scene
+/// and ball columns of `carry batch flight`, `label`. Empty cells take the command-line
+/// value. Output: CSV (`line`, `label` if given, [`FlightRecord::COLUMNS`], `error`) or
+/// JSON lines (`--json`: `carry estimate --from flight --json`'s keys).
+///
+/// # Errors
+/// A bad file or header (status 2), failing to write (status 1).
+pub fn batch(
+    args: &crate::cli::BatchArgs,
+    cmd: &super::estimate::EstimateCmd,
+) -> Result<(), Failure> {
+    use carry_io::batch::Columns;
+    use carry_io::compute::Mode;
+    let u = cmd.output.units;
+    let mut base = Params::default();
+    cmd.scene.apply(&mut base, u)?;
+    let n = Numerics {
+        precision: cmd.precision.precision,
+        ..Numerics::default()
+    };
+    let request = cmd.flight.request(&cmd.launch, u)?;
+    // the 1σ of a value a row gives without its own `_sd`: the option's, else the default
+    let o = &cmd.flight;
+    let option_sd = [
+        o.ball_speed_sd,
+        o.launch_angle_sd,
+        o.launch_direction_sd,
+        o.spin_sd,
+        o.spin_axis_sd,
+        o.apex_height_sd,
+        o.apex_time_sd,
+        o.carry_sd,
+        o.side_sd,
+        o.flight_time_sd,
+        o.land_angle_sd,
+    ];
+    let defaults: Vec<f64> = LAUNCH_SD.iter().chain(&SUMMARY_SD).copied().collect();
+    let sd_of = |i: usize| {
+        let q = FIELDS.get(i).map_or(Quantity::Plain, |f| f.2);
+        option_sd
+            .get(i)
+            .copied()
+            .flatten()
+            .map(|s| u.to_si(q, s))
+            .or_else(|| defaults.get(i).copied())
+            .unwrap_or(1.0)
+    };
+    let (source, _) = carry_io::batch::open(&args.input)?;
+    let name = args.input.display().to_string();
+    let dir = if args.input.as_os_str() == "-" {
+        PathBuf::from(".")
+    } else {
+        args.input
+            .parent()
+            .map_or_else(|| PathBuf::from("."), PathBuf::from)
+    };
+    let mut rdr = carry_io::batch::dialect().from_reader(source);
+    let header = rdr
+        .byte_headers()
+        .map_err(|e| InputError::new("input", format!("{name}: cannot read the header: {e}")))?
+        .clone();
+    let head_error = |why: String| -> Failure {
+        InputError::new("input", format!("{name}: line 1: {why}")).into()
+    };
+    // split the header: flight columns here, the rest (scene, ball, label) through io
+    let mut flight_cols: Vec<(usize, usize, Part, bool)> = Vec::new();
+    let mut track_col: Option<usize> = None;
+    let mut rest_idx: Vec<usize> = Vec::new();
+    let mut rest_header = csv::ByteRecord::new();
+    for (i, raw) in header.iter().enumerate() {
+        let col = String::from_utf8_lossy(raw);
+        let col = col.trim().trim_start_matches('\u{feff}');
+        if let Some((field, part, si)) = flight_column(col) {
+            if flight_cols
+                .iter()
+                .any(|&(_, f, p, _)| f == field && p == part)
+            {
+                return Err(head_error(format!(
+                    "column '{col}' gives what another column gives"
+                )));
+            }
+            flight_cols.push((i, field, part, si));
+        } else if col == "track" {
+            if track_col.replace(i).is_some() {
+                return Err(head_error(format!("column '{col}' appears twice")));
+            }
+        } else if matches!(col, "backspin" | "sidespin") {
+            return Err(head_error(format!(
+                "column '{col}': with --from flight give the measured spin as spin and spin_axis"
+            )));
+        } else if matches!(col, "backspin_rpm" | "sidespin_rpm") {
+            // another batch's output: its spin is `spin_rpm`, `spin_axis_deg`
+        } else {
+            rest_idx.push(i);
+            rest_header.push_field(raw);
+        }
+    }
+    let cols = Columns::from_header(&rest_header, Mode::Flight)
+        .map_err(|e| InputError::new("input", format!("{name}: {}", e.reason)))?;
+    let records: Vec<csv::ByteRecord> = rdr
+        .byte_records()
+        .collect::<Result<_, _>>()
+        .map_err(|e| InputError::new("input", format!("{name}: {e}")))?;
+    let text = |rec: &csv::ByteRecord, i: usize| {
+        String::from_utf8_lossy(rec.get(i).unwrap_or_default())
+            .trim()
+            .to_owned()
+    };
+    let row = |rec: &csv::ByteRecord| -> Result<(Params, FlightRequest), InputError> {
+        if rec.len() != header.len() {
+            return Err(InputError::new(
+                "input",
+                format!(
+                    "expected {} fields as in the header, found {}",
+                    header.len(),
+                    rec.len()
+                ),
+            ));
+        }
+        let mut sub = csv::ByteRecord::new();
+        for &i in &rest_idx {
+            sub.push_field(rec.get(i).unwrap_or_default());
+        }
+        let p = cols.apply(&sub, &base, u)?;
+        let mut r = request.clone();
+        // values first, then their 1σ (a row's `_sd` may refine an option's value)
+        for want in [Part::Value, Part::Sd] {
+            for &(i, field, part, si) in flight_cols.iter().filter(|c| c.2 == want) {
+                let t = text(rec, i);
+                if t.is_empty() {
+                    continue;
+                }
+                let (opt, si_name, q) = FIELDS.get(field).copied().unwrap_or(FIELDS[0]);
+                let key = if si { si_name } else { opt };
+                let v = carry_io::params::parse_finite(&t).map_err(|e| InputError::new(key, e))?;
+                let v = if si { v } else { u.to_si(q, v) };
+                let Some(g) = given_mut(&mut r, field) else {
+                    continue;
+                };
+                match part {
+                    Part::Value => *g = Some((v, sd_of(field))),
+                    Part::Sd => {
+                        if let Some((_, sd)) = g.as_mut() {
+                            *sd = v;
+                        }
+                    }
+                }
+            }
+        }
+        if let Some(i) = track_col {
+            let t = text(rec, i);
+            if !t.is_empty() {
+                r.track = lf::read_track(&dir.join(&t))?;
+            }
+        }
+        Ok((p, r))
+    };
+    let inputs: Vec<_> = records.iter().map(row).collect();
+    let results = lf::fit_rows(&inputs, &n, args.threads)?;
+    let mut out = String::new();
+    let label = cols.label;
+    if !cmd.output.json {
+        out.push_str("line");
+        if label.is_some() {
+            out.push_str(",label");
+        }
+        for c in FlightRecord::COLUMNS.iter().chain(&["error"]) {
+            out.push(',');
+            out.push_str(c);
+        }
+        out.push('\n');
+    }
+    for (rec, result) in records.iter().zip(&results) {
+        let line = rec.position().map_or(0, csv::Position::line);
+        let label_text = label
+            .and_then(|i| rest_idx.get(i))
+            .and_then(|&i| rec.get(i))
+            .map(|l| String::from_utf8_lossy(l).into_owned());
+        let error = result
+            .as_ref()
+            .err()
+            .map(|e| format!("line {line}: {}", e.as_column()));
+        if cmd.output.json {
+            let mut obj = serde_json::Map::new();
+            obj.insert("line".into(), line.into());
+            if let Some(l) = &label_text {
+                obj.insert("label".into(), l.clone().into());
+            }
+            if let Ok(Ok(serde_json::Value::Object(fields))) =
+                result.as_ref().map(serde_json::to_value)
+            {
+                obj.extend(fields);
+            }
+            if let Some(e) = error {
+                obj.insert("error".into(), e.into());
+            }
+            out.push_str(&serde_json::Value::Object(obj).to_string());
+            out.push('\n');
+        } else {
+            let _ = write!(out, "{line}");
+            if label.is_some() {
+                let _ = write!(
+                    out,
+                    ",{}",
+                    super::estimate::csv_text(label_text.as_deref().unwrap_or(""))
+                );
+            }
+            match result {
+                Ok(r) => {
+                    for c in r.cells() {
+                        let _ = write!(out, ",{}", super::estimate::csv_text(&c));
+                    }
+                    out.push_str(",\n");
+                }
+                Err(_) => {
+                    out.push_str(&",".repeat(FlightRecord::COLUMNS.len()));
+                    let _ = writeln!(
+                        out,
+                        ",{}",
+                        super::estimate::csv_text(error.as_deref().unwrap_or(""))
+                    );
+                }
+            }
+        }
+    }
+    crate::write_stdout(out.as_bytes())
 }

@@ -162,6 +162,34 @@ fn paths() -> u32 {
         ));
     }
     black_box((r_est32, r_est64));
+    // the launch from the flight (issue 36)
+    let mut lf32 = core::mem::MaybeUninit::<CarryLaunchFromFlightInputF32>::zeroed();
+    let mut lf64 = core::mem::MaybeUninit::<CarryLaunchFromFlightInputF64>::zeroed();
+    let mut ws32 = core::mem::MaybeUninit::<CarryLaunchFromFlightWorkspaceF32>::zeroed();
+    let mut ws64 = core::mem::MaybeUninit::<CarryLaunchFromFlightWorkspaceF64>::zeroed();
+    let mut r_lf32 = opaque(CarryLaunchFromFlightResultF32::refused(0));
+    let mut r_lf64 = opaque(CarryLaunchFromFlightResultF64::refused(0));
+    // SAFETY: every pointer is NULL or points to a live value of its type; the zeroed
+    // inputs are plain numbers and NULL arrays (any bit pattern of a number is valid).
+    unsafe {
+        add(carry_launch_from_flight_input_default_f32(opaque(
+            lf32.as_mut_ptr(),
+        )));
+        add(carry_launch_from_flight_input_default_f64(opaque(
+            lf64.as_mut_ptr(),
+        )));
+        add(carry_launch_from_flight_f32(
+            opaque(lf32.as_ptr()),
+            opaque(ws32.as_mut_ptr()),
+            opaque(&mut r_lf32),
+        ));
+        add(carry_launch_from_flight_f64(
+            opaque(lf64.as_ptr()),
+            opaque(ws64.as_mut_ptr()),
+            opaque(&mut r_lf64),
+        ));
+    }
+    black_box((r_lf32, r_lf64));
     acc = acc.wrapping_add(carry_club_preset_count());
     acc = acc.wrapping_add(opaque(carry_club_preset_name(index)) as usize as u32);
     acc = acc.wrapping_add(opaque(carry_error_message(opaque(index))) as usize as u32);
