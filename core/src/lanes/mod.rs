@@ -440,13 +440,15 @@ fn outcome<T: Real>(lane: &Lane<'_, T>, landing: &Landing<T>) -> Result<FlightOu
     let side = position.z - p0.z;
     let spin = y[crate::aero::S];
     Ok(FlightOutcome {
-        carry_m: carry_x.hypot(side),
+        // As the scalar path (flight/mod.rs): a square root, not `hypot`, bit for bit.
+        carry_m: (carry_x * carry_x + side * side).root(),
         carry_x_m: carry_x,
         side_m: side,
         apex_m,
         apex_time_s,
         flight_time_s: landing.time,
-        landing_angle_rad: (-velocity.y).atan2(velocity.x.hypot(velocity.z)),
+        landing_angle_rad: (-velocity.y)
+            .atan2((velocity.x * velocity.x + velocity.z * velocity.z).root()),
         landing_speed_mps: length(&velocity),
         landing_spin_radps: spin,
         landing_position_m: position,
