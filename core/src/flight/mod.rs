@@ -102,17 +102,13 @@ impl<T: Real> PreparedScene<T> {
     }
 }
 
-/// The flight with the dynamics `make` builds from the runtime dynamics (the production
-/// path passes them through; the benchmark substitutes compile-time switches).
-fn run<'s, T: Real, R: Rhs<T>>(
-    scene: &'s PreparedScene<T>,
+/// The flight's start from a validated launch: the speed and spin bounds, the state
+/// `[x, y, z, vx, vy, vz, ω]` at the scene's launch position and the unit spin axis (zero
+/// without spin). Shared by the scalar flight and the lanes kernel.
+pub(crate) fn start_state<T: Real>(
+    scene: &PreparedScene<T>,
     launch: &BallMotion<T>,
-    integrator: &Integrator<T>,
-    recorder: Option<&mut Recorder<'_, T>>,
-    make: impl FnOnce(Dynamics<'s, T>) -> R,
-) -> Result<FlightOutcome<T>> {
-    let launch = launch.validated()?;
-    let method = integrator.method()?;
+) -> Result<(State<T>, Vector3<T>)> {
     if !(length(&launch.velocity_mps) <= lit(MAX_BALL_SPEED_MPS)) {
         return Err(Error::invalid(Field::BallVelocity, Reason::OutOfRange));
     }
@@ -127,8 +123,24 @@ fn run<'s, T: Real, R: Rhs<T>>(
     };
     let p0 = scene.launch_position;
     let v0 = launch.velocity_mps;
-    let y0: State<T> = [p0.x, p0.y, p0.z, v0.x, v0.y, v0.z, spin];
-    if y0[Y] <= scene.landing_height && v0.y <= T::zero() {
+    Ok(([p0.x, p0.y, p0.z, v0.x, v0.y, v0.z, spin], axis))
+}
+
+/// The flight with the dynamics `make` builds from the runtime dynamics (the production
+/// path passes them through; the benchmark substitutes compile-time switches).
+fn run<'s, T: Real, R: Rhs<T>>(
+    scene: &'s PreparedScene<T>,
+    launch: &BallMotion<T>,
+    integrator: &Integrator<T>,
+    recorder: Option<&mut Recorder<'_, T>>,
+    make: impl FnOnce(Dynamics<'s, T>) -> R,
+) -> Result<FlightOutcome<T>> {
+    let launch = launch.validated()?;
+    let method = integrator.method()?;
+    let (y0, axis) = start_state(scene, &launch)?;
+    let spin = y0[S];
+    let p0 = scene.launch_position;
+    if y0[Y] <= scene.landing_height && launch.velocity_mps.y <= T::zero() {
         // At or below the landing height and not rising: it never comes down through it.
         // On a ground it meets the turf at once (a topped shot) and bounces and rolls.
         return match &scene.ground {

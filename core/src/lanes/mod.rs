@@ -43,10 +43,8 @@ pub mod kernel;
 use crate::aero::model::Forces;
 use crate::aero::{State, VY, Y};
 use crate::ball::BallMotion;
-use crate::error::{Error, Field, Reason, Result};
-use crate::flight::{
-    FlightOutcome, Integrator, MAX_ADAPTIVE_STEPS, MAX_BALL_SPEED_MPS, MAX_SPIN_RADPS,
-};
+use crate::error::{Error, Result};
+use crate::flight::{FlightOutcome, Integrator, MAX_ADAPTIVE_STEPS};
 use crate::integrator::Method;
 use crate::integrator::events::{Landing, Step, Tracker};
 use crate::integrator::integrate::Adaptive;
@@ -271,22 +269,8 @@ impl<T: Real, P: Pack<Scalar = T>> Run<P> {
     fn start(&mut self, l: usize, shot: &Shot<'_, T>) -> Result<(State<T>, Vector3<T>)> {
         let scene = shot.scene;
         let launch = shot.launch.validated()?;
-        if !(length(&launch.velocity_mps) <= lit(MAX_BALL_SPEED_MPS)) {
-            return Err(Error::invalid(Field::BallVelocity, Reason::OutOfRange));
-        }
-        let spin = length(&launch.spin_radps);
-        if !(spin <= lit(MAX_SPIN_RADPS)) {
-            return Err(Error::invalid(Field::BallSpin, Reason::OutOfRange));
-        }
-        let axis = if spin > T::zero() {
-            launch.spin_radps / spin
-        } else {
-            Vector3::zeros()
-        };
-        let p0 = scene.launch_position;
-        let v0 = launch.velocity_mps;
-        let y0: State<T> = [p0.x, p0.y, p0.z, v0.x, v0.y, v0.z, spin];
-        if y0[Y] <= scene.landing_height && v0.y <= T::zero() {
+        let (y0, axis) = crate::flight::start_state(scene, &launch)?;
+        if y0[Y] <= scene.landing_height && launch.velocity_mps.y <= T::zero() {
             // Never comes down through the landing height (no ground in a covered scene).
             return Err(Error::NoLanding);
         }
