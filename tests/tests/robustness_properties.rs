@@ -35,9 +35,11 @@ const F32_SPIN_REL: f64 = 1e-4;
 /// the local error per step (tolerance 1e-6 × |y| ≈ 2e-4 m, and f32 rounding of ~200 m
 /// positions, 1.5e-5 m) accumulates over more steps. With the calibrated aerodynamics (the
 /// drag crisis and the saturating lift, crossed many times by a ball riding a 30 m/s
-/// tailwind) the measured worst over 2,000 cases is 14 cm on a 440 m carry (a proptest
-/// find: 15.5 cm); bound 0.25 m.
-const F32_CARRY_M: f64 = 0.25;
+/// tailwind) the measured worst over 2,000 cases was 14 cm on a 440 m carry (a proptest
+/// find: 15.5 cm; later a helper's run 27 cm, over the 0.25 m bound then). Over 200,000
+/// cases of this generator (2026-11-28): 147 beyond 0.1 m, one beyond 0.25 m, worst 0.29 m
+/// (a 290 m carry launched at 59° into a 10 m/s wind); bound 0.35 m.
+const F32_CARRY_M: f64 = 0.35;
 
 fn f32_matches_f64(s: &Scenario, solver: Solver) -> Result<(), TestCaseError> {
     let (Ok((c64, b64, s64)), Ok((c32, b32, s32))) = (s.build::<f64>(), s.build::<f32>()) else {
