@@ -7,14 +7,16 @@
 //! inside Penner's measured range; the drives without a strike location struck at the
 //! training sessions' median location. Reported: the held-out session's drives (ball speed,
 //! launch, spin, axis; without and with the strike location) and the tables (in the fit),
-//! against the default models.
+//! against the default models. `--table-weight W` weighs the tables W times the drives;
+//! `--hold-cap` holds e_t,max at 0.22; `--sweet-spot` fits the driver's CG height too and
+//! strikes the tables' driver rows at the data's median location.
 //!
-//! `cargo run --release -p carry-lab --example impact_joint_refit [-- --hold-cap] [-- --table-weight W]`
+//! `cargo run --release -p carry-lab --example impact_joint_refit [-- --hold-cap] [-- --table-weight W] [-- --sweet-spot]`
 
-use carry_core::Preset;
-use carry_core::impact::{CompliantContact, ContactLaw};
-use carry_core::presets::FITTED_COMPLIANT;
-use carry_core::units::MPS_PER_MPH;
+use carry_core::impact::{self, CompliantContact, ContactLaw, Solver};
+use carry_core::presets::{FITTED_COMPLIANT, TypicalDelivery};
+use carry_core::units::{MPS_PER_MPH, to_deg, to_rpm};
+use carry_core::{Ball, ClubSpec, DeliveryConvention, Preset};
 use carry_lab::drives::{self, Drive};
 use carry_lab::fit::impact::{
     self as fit_impact, BALL_SPEED_SIGMA_REL, DeliveryRow, LAUNCH_SIGMA_DEG, PARAMETERS,
@@ -39,12 +41,101 @@ struct Joint {
     hold_cap: bool,
     /// Weight of one drive (the tables' rows weigh 1).
     drive_weight: f64,
+    /// Fit the driver's CG height too (a fifth parameter, `--sweet-spot`), and strike the
+    /// tables' driver rows at the data's typical location.
+    sweet_spot: bool,
+}
+
+/// The driver's CG height offset's bounds (m, the face frame's y of `cg_to_face_m`; the preset
+/// −0.005: its sweet spot 5 mm above the face centre).
+const CG_Y: (f64, f64) = (-0.015, 0.005);
+
+/// Ball speed, launch, direction, spin, axis of `delivery` struck by `preset` with `law` and,
+/// for the driver, its CG at height `cg_y`.
+fn strike(
+    preset: &Preset,
+    law: ContactLaw<f64>,
+    cg_y: Option<f64>,
+    delivery: &carry_core::Delivery<f64>,
+) -> Result<[f64; 5], String> {
+    let mut spec = ClubSpec {
+        contact: law,
+        ..preset.spec::<f64>()
+    };
+    if let (Some(y), "driver") = (cg_y, preset.name) {
+        spec.cg_to_face_m.y = y;
+    }
+    let club = spec.validate().map_err(|e| e.to_string())?;
+    let st = delivery
+        .strike_in(&club, DeliveryConvention::TrackMan)
+        .map_err(|e| e.to_string())?;
+    let l = impact::solve(&club, &Ball::standard(), &st, Solver::Reduced)
+        .map_err(|e| e.to_string())?
+        .launch;
+    Ok([
+        l.ball_speed_mps,
+        to_deg(l.launch_angle_rad),
+        to_deg(l.launch_direction_rad),
+        to_rpm(l.spin_radps),
+        to_deg(l.spin_axis_rad),
+    ])
+}
+
+/// A drive struck at its location (or `typical`) with `law` and the driver's CG at `cg_y`.
+fn drive_model(
+    d: &Drive,
+    law: ContactLaw<f64>,
+    cg_y: Option<f64>,
+    located: bool,
+    typical: [f64; 2],
+) -> Result<[f64; 5], String> {
+    let loc = if located {
+        d.strike_m.unwrap_or(typical)
+    } else {
+        typical
+    };
+    let club = d.full_delivery().ok_or("no full delivery")?;
+    strike(
+        single_drives::driver(),
+        law,
+        cg_y,
+        &single_drives::delivery(club, loc),
+    )
+}
+
+/// A table row with `law`; with `data_strike`, a driver row is struck at that location.
+fn table_model(
+    r: &DeliveryRow,
+    law: ContactLaw<f64>,
+    cg_y: Option<f64>,
+    data_strike: Option<[f64; 2]>,
+) -> Result<[f64; 3], String> {
+    let mut h = fit_impact::impact_height_m(r);
+    let mut toe = 0.0;
+    if let (Some(s), "driver") = (data_strike, r.preset.name) {
+        toe = s[0];
+        h = s[1];
+    }
+    let mut d = TypicalDelivery {
+        club_speed_mps: r.club_speed_mps,
+        attack_angle_deg: r.attack_deg,
+        dynamic_loft_deg: r.dynamic_loft_deg,
+        impact_height_m: h,
+    }
+    .delivery::<f64>();
+    d.location.toe_m = toe;
+    let m = strike(r.preset, law, cg_y, &d)?;
+    Ok([m[0], m[1], m[3]])
 }
 
 impl Problem for Joint {
     type Row = Row;
     fn parameter_names(&self) -> Vec<&'static str> {
-        PARAMETERS.to_vec()
+        let mut v = PARAMETERS.to_vec();
+        if self.sweet_spot {
+            v.push("driver_cg_height_m");
+        }
+        v
     }
     fn bounds(&self) -> Vec<(f64, f64)> {
         let cap = FITTED_COMPLIANT.tangential_restitution_max;
@@ -53,16 +144,24 @@ impl Problem for Joint {
         } else {
             (0.0, 1.0)
         };
-        vec![(-1.0, 1.0), (-3.0, 3.0), cap, K_E]
+        let mut b = vec![(-1.0, 1.0), (-3.0, 3.0), cap, K_E];
+        if self.sweet_spot {
+            b.push(CG_Y);
+        }
+        b
     }
     fn initial(&self) -> Vec<f64> {
         let c = FITTED_COMPLIANT;
-        vec![
+        let mut v = vec![
             c.tangential_restitution,
             c.tangential_restitution_slope,
             c.tangential_restitution_max,
             c.restitution_speed_slope_spm,
-        ]
+        ];
+        if self.sweet_spot {
+            v.push(single_drives::driver().cg_to_face_m[1]);
+        }
+        v
     }
     fn quantity_names(&self) -> Vec<&'static str> {
         vec!["ball_speed", "launch_angle", "spin"]
@@ -95,12 +194,15 @@ impl Problem for Joint {
     }
     fn predict(&self, p: &[f64], r: &Row) -> Result<Vec<f64>, String> {
         let law = ContactLaw::Compliant(compliant(p, FITTED_COMPLIANT.friction));
+        let cg_y = p.get(4).copied();
         match r {
             Row::Drive(d) => {
-                let m = single_drives::predict(d, law, true, self.typical)?;
+                let m = drive_model(d, law, cg_y, true, self.typical)?;
                 Ok(vec![m[0], m[1], m[3]])
             }
-            Row::Table(t) => Ok(fit_impact::predict(t, law)?.to_vec()),
+            Row::Table(t) => {
+                Ok(table_model(t, law, cg_y, self.sweet_spot.then_some(self.typical))?.to_vec())
+            }
         }
     }
 }
@@ -137,11 +239,16 @@ fn tables() -> Result<Vec<DeliveryRow>, String> {
 }
 
 /// Mean |err| over table rows: ball speed %, launch °, spin % and worst spin %.
-fn table_errors(rows: &[DeliveryRow], c: CompliantContact<f64>) -> [f64; 4] {
+fn table_errors(
+    rows: &[DeliveryRow],
+    c: CompliantContact<f64>,
+    cg_y: Option<f64>,
+    data_strike: Option<[f64; 2]>,
+) -> [f64; 4] {
     let mut s = [0.0; 4];
     let mut n = 0.0;
     for r in rows {
-        if let Ok(p) = fit_impact::predict(r, ContactLaw::Compliant(c)) {
+        if let Ok(p) = table_model(r, ContactLaw::Compliant(c), cg_y, data_strike) {
             let spin = (p[2] / r.spin_rpm - 1.0).abs();
             s[0] += (p[0] / r.ball_speed_mps - 1.0).abs();
             s[1] += (p[1] - r.launch_deg).abs();
@@ -157,6 +264,7 @@ fn table_errors(rows: &[DeliveryRow], c: CompliantContact<f64>) -> [f64; 4] {
 fn drive_errors(
     drives: &[Drive],
     c: CompliantContact<f64>,
+    cg_y: Option<f64>,
     located: bool,
     typical: [f64; 2],
 ) -> ([f64; 5], usize) {
@@ -165,7 +273,7 @@ fn drive_errors(
         .filter(|d| !located || d.strike_m.is_some())
         .filter_map(|d| {
             let o = observed(d)?;
-            let m = single_drives::predict(d, ContactLaw::Compliant(c), located, typical).ok()?;
+            let m = drive_model(d, ContactLaw::Compliant(c), cg_y, located, typical).ok()?;
             Some([
                 (m[0] / o[0] - 1.0).abs(),
                 (m[1] - o[1]).abs(),
@@ -205,6 +313,7 @@ fn main() {
     };
     let args: Vec<String> = std::env::args().collect();
     let hold_cap = args.iter().any(|a| a == "--hold-cap");
+    let sweet_spot = args.iter().any(|a| a == "--sweet-spot");
     // the tables' total weight over the drives' (`--table-weight W`, default 1)
     let table_weight = args
         .iter()
@@ -216,8 +325,8 @@ fn main() {
     let preset_typical = [0.0, single_drives::driver().typical.impact_height_m];
     let sessions = drives::sessions(&all);
     let base = FITTED_COMPLIANT;
-    let tb = table_errors(&tables[..11], base);
-    let cb = table_errors(&tables[11..], base);
+    let tb = table_errors(&tables[..11], base, None, None);
+    let cb = table_errors(&tables[11..], base, None, None);
     println!(
         "before (default models): club_delivery.csv ball speed {:.2} %, launch {:.2}°, spin {:.1} % (worst {:.1} %); chart {:.2} %, {:.2}°, {:.1} % (worst {:.1} %)\n",
         tb[0], tb[1], tb[2], tb[3], cb[0], cb[1], cb[2], cb[3]
@@ -242,20 +351,24 @@ fn main() {
             typical,
             hold_cap,
             drive_weight,
+            sweet_spot,
         };
         let mut rows = train_drives;
         rows.extend(tables.iter().cloned().map(Row::Table));
-        let c = match solve(&problem, &rows, &problem.initial()) {
-            Ok(f) => compliant(&f.parameters, FITTED_COMPLIANT.friction),
+        let (c, cg_y) = match solve(&problem, &rows, &problem.initial()) {
+            Ok(f) => (
+                compliant(&f.parameters, FITTED_COMPLIANT.friction),
+                f.parameters.get(4).copied(),
+            ),
             Err(e) => {
                 eprintln!("session {s}: {e}");
                 continue;
             }
         };
-        let (b_t, n_t) = drive_errors(&test, base, false, preset_typical);
-        let (a_t, _) = drive_errors(&test, c, false, typical);
-        let (b_l, n_l) = drive_errors(&test, base, true, preset_typical);
-        let (a_l, _) = drive_errors(&test, c, true, typical);
+        let (b_t, n_t) = drive_errors(&test, base, None, false, preset_typical);
+        let (a_t, _) = drive_errors(&test, c, cg_y, false, typical);
+        let (b_l, n_l) = drive_errors(&test, base, None, true, preset_typical);
+        let (a_l, _) = drive_errors(&test, c, cg_y, true, typical);
         for (k, (v, n)) in [(b_t, n_t), (a_t, n_t), (b_l, n_l), (a_l, n_l)]
             .into_iter()
             .enumerate()
@@ -266,8 +379,12 @@ fn main() {
             }
             counts[k] += n;
         }
-        let t = table_errors(&tables[..11], c);
-        let ch = table_errors(&tables[11..], c);
+        let data_strike = sweet_spot.then_some(typical);
+        let t = table_errors(&tables[..11], c, cg_y, data_strike);
+        let ch = table_errors(&tables[11..], c, cg_y, data_strike);
+        if let Some(y) = cg_y {
+            println!("(session {s}: driver CG height {:.1} mm)", 1e3 * y);
+        }
         println!(
             "| {s} | {:.3} | {:.3} | {:.3} | {:.4} | {:.1}, {:.1} | {:.1} → {:.1} % / {:.2} → {:.2}° / {:.1} ({:+.1}) → {:.1} ({:+.1}) % / {:.1} → {:.1}° | {:.1} → {:.1} % / {:.2} → {:.2}° / {:.1} → {:.1} % | {:.2} % / {:.2}° / {:.1} % ({:.1} %) | {:.2} % / {:.2}° / {:.1} % ({:.1} %) |",
             c.tangential_restitution,
