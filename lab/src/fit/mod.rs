@@ -8,6 +8,7 @@
 //! fitted to. [`flight`] holds the aerodynamic families, [`impact`] the compliant contact.
 
 mod bounded;
+pub mod command;
 pub mod flight;
 pub mod impact;
 mod problem;

@@ -8,7 +8,7 @@
 //! dynamic_loft_deg, ball_speed_mph, launch_deg, spin_rpm`; `who` labels the rows).
 //! `--evaluate compliant|FILE.toml` reports a given compliant law without fitting.
 
-use super::request::{FitRequest, Produced};
+use super::command::{FitRequest, Produced, status};
 use crate::fit::impact::{self, ContactProblem, PARAMETERS};
 use crate::fit::{self, Fit, FitOptions};
 use carry_core::units::MPS_PER_MPH;
@@ -20,7 +20,7 @@ use std::io::{IsTerminal as _, Read as _};
 pub const FAMILY: &str = "compliant";
 
 /// Runs `carry fit --family compliant`: what it prints (table or JSON), as
-/// [`super::request::report`] (or the document as a value).
+/// the aerodynamic families' `report` (or the document as a value).
 ///
 /// # Errors
 /// Bad input or a law that is not compliant (status 2); a fit that fails or a file that
@@ -118,7 +118,7 @@ fn table(f: &Fit, friction: f64, cmd: &FitRequest) -> String {
         s,
         "FIT  family {FAMILY}, {} rows, {} ({} impacts)",
         f.rows.len(),
-        super::request::status(f, cmd.evaluate.is_some()),
+        status(f, cmd.evaluate.is_some()),
         f.row_evaluations
     );
     let _ = writeln!(s, "\nCOEFFICIENTS");
