@@ -117,15 +117,22 @@ impl<T: Real> Delivery<T> {
         let (sp, cp) = sin_cos(path);
         let velocity = Vector3::new(ca * cp, sa, ca * sp) * v;
         let orientation = rot_y(-face) * rot_z(loft - club.loft_rad()) * rot_x(lie);
-        Strike::new(
-            ClubMotion {
+        // Not through `Strike::new`: its checks of the club's motion cannot fail here (the
+        // velocity is a unit vector times a finite speed, the orientation a product of three
+        // rotations built from finite angles, a rotation to a few ulps), and the rotation test
+        // (`R Rᵀ − I`, `det R`) cost ≈ 200 instructions of a 10k-instruction shot on a
+        // Cortex-M4F (docs/performance.md). The ball at rest needs no check; the location does.
+        finite(self.location.height_m, Field::ImpactHeight)?;
+        finite(self.location.toe_m, Field::ImpactToe)?;
+        Ok(Strike {
+            club: ClubMotion {
                 velocity_mps: velocity,
                 spin_radps: spin,
                 orientation,
             },
-            BallMotion::at_rest(),
-            self.location,
-        )
+            ball: BallMotion::at_rest(),
+            location: self.location,
+        })
     }
 }
 

@@ -18,7 +18,10 @@
 //! tracked point): standard air, each shot's own wind and density, and one weather per
 //! session and per outing fitted jointly with the spins (10-fold cross-validated).
 //!
-//! `cargo run --release -p carry-lab --example launch_fit_report [SHOTS] [--only=synthetic|indoor|outdoor]`
+//! `cargo run --release -p carry-lab --example launch_fit_report [SHOTS] [--only=synthetic|indoor|outdoor] [--f32]`
+//!
+//! `--f32`: the synthetic fits are made in f32 (the same observations rounded to f32), as on
+//! a launch monitor's MCU, and each row adds how far they are from the f64 fits (in σ).
 use std::time::Instant;
 
 use carry_core::aero::AeroModel;
@@ -90,8 +93,10 @@ fn normal(rng: &mut ChaCha8Rng) -> f64 {
 }
 
 /// One synthetic shot: the fit's error in spin (fraction), axis (rad), carry (m), whether
-/// spin and axis are within 1σ, flights, seconds.
-fn synthetic(set: Set, seed: u64) -> Result<[f64; 7], String> {
+/// spin and axis are within 1σ, flights, seconds. With `single`, the fit is made in f32 (the
+/// same observations, rounded to f32) and three more figures follow: how far the f32 fit's
+/// spin and axis are from the f64 fit's, in the f32 fit's σ, and the f64 fit's flights.
+fn synthetic(set: Set, seed: u64, single: bool) -> Result<[f64; 10], String> {
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     let truth = LaunchValues {
         ball_speed_mps: rng.random_range(40.0..80.0),
@@ -201,7 +206,45 @@ fn synthetic(set: Set, seed: u64) -> Result<[f64; 7], String> {
         &mut ws,
     )
     .map_err(|e| e.to_string())?;
-    let seconds = started.elapsed().as_secs_f64();
+    let mut seconds = started.elapsed().as_secs_f64();
+    let mut shift = [0.0; 3];
+    let fit = if single {
+        let started = Instant::now();
+        let mut ws32 = Box::new(Workspace::<f32>::new());
+        let fit32 = fit_launch(
+            &Ball::standard(),
+            &Scene::<f32>::default(),
+            &measured_f32(&measured),
+            &observations_f32(&obs)?,
+            &Settings::default(),
+            &mut ws32,
+        )
+        .map_err(|e| e.to_string())?;
+        seconds = started.elapsed().as_secs_f64();
+        let v = fit32.value.to_array().map(f64::from);
+        let sd = fit32.sd.to_array().map(f64::from);
+        shift = [
+            (v[3] - fit.value.spin_radps) / sd[3],
+            (v[4] - fit.value.spin_axis_rad) / sd[4],
+            f64::from(fit.flights),
+        ];
+        carry_core::launch_fit::LaunchFit {
+            value: LaunchValues::from_array(v),
+            sd: LaunchValues::from_array(sd),
+            source: fit32.source,
+            wind_mps: None,
+            air_density_kgm3: None,
+            flight: fit.flight,
+            chi2: f64::from(fit32.chi2),
+            worst_observation: fit32.worst_observation,
+            worst_residual_sigma: f64::from(fit32.worst_residual_sigma),
+            observations: fit32.observations,
+            iterations: fit32.iterations,
+            flights: fit32.flights,
+        }
+    } else {
+        fit
+    };
     let carry = prepared
         .fly(
             &launch_of(&fit.value)
@@ -224,7 +267,51 @@ fn synthetic(set: Set, seed: u64) -> Result<[f64; 7], String> {
         f64::from(u8::from(axis_err.abs() <= fit.sd.spin_axis_rad)),
         f64::from(fit.flights),
         seconds,
+        shift[0],
+        shift[1],
+        shift[2],
     ])
+}
+
+/// A datum in f32.
+fn datum_f32(d: Datum<f64>) -> Datum<f32> {
+    Datum::new(d.value as f32, d.sd as f32)
+}
+
+/// The measured launch in f32.
+fn measured_f32(m: &MeasuredLaunch<f64>) -> MeasuredLaunch<f32> {
+    LaunchValues::from_array(m.to_array().map(|d| d.map(datum_f32)))
+}
+
+/// The observations in f32 (each number rounded once).
+fn observations_f32(o: &Observations<f64>) -> Result<Observations<f32>, String> {
+    let mut out = Observations::<f32>::default();
+    for p in &o.track {
+        out.track
+            .push(TrackPoint {
+                time_s: p.time_s as f32,
+                position_m: p.position_m.cast(),
+                sd_m: p.sd_m as f32,
+            })
+            .map_err(|_| "track capacity")?;
+    }
+    for d in &o.doppler {
+        out.doppler
+            .push(DopplerSample {
+                time_s: d.time_s as f32,
+                radial_speed_mps: d.radial_speed_mps as f32,
+                sd_mps: d.sd_mps as f32,
+            })
+            .map_err(|_| "Doppler capacity")?;
+    }
+    out.radar_position_m = o.radar_position_m.cast();
+    out.apex_height_m = o.apex_height_m.map(datum_f32);
+    out.apex_time_s = o.apex_time_s.map(datum_f32);
+    out.carry_m = o.carry_m.map(datum_f32);
+    out.side_m = o.side_m.map(datum_f32);
+    out.flight_time_s = o.flight_time_s.map(datum_f32);
+    out.land_angle_rad = o.land_angle_rad.map(datum_f32);
+    Ok(out)
 }
 
 fn mean(v: impl Iterator<Item = f64>) -> f64 {
@@ -237,12 +324,25 @@ fn median(mut v: Vec<f64>) -> f64 {
     v.get(v.len() / 2).copied().unwrap_or(f64::NAN)
 }
 
-fn synthetic_table(shots: u64) {
-    println!("## Synthetic shots ({shots} per set; measured speed, angle, direction)\n");
+fn synthetic_table(shots: u64, single: bool) {
+    let precision = if single {
+        "; fitted in f32 (the observations rounded to f32), beside the f64 fit of the same data"
+    } else {
+        ""
+    };
+    println!("## Synthetic shots ({shots} per set; measured speed, angle, direction{precision})\n");
+    let extra = if single {
+        " (f32 − f64)/σ spin mean / max | axis mean / max | flights f64 |"
+    } else {
+        ""
+    };
     println!(
-        "| observations | spin mean |err| | axis mean |err| | carry mean |err| | spin / axis within 1σ | flights per fit | host µs per fit (median) | failed |"
+        "| observations | spin mean |err| | axis mean |err| | carry mean |err| | spin / axis within 1σ | flights per fit | host µs per fit (median) | failed |{extra}"
     );
-    println!("|---|---:|---:|---:|---:|---:|---:|---:|");
+    println!(
+        "|---|---:|---:|---:|---:|---:|---:|---:|{}",
+        if single { "---:|---:|---:|" } else { "" }
+    );
     let sets = [
         Set::Summaries,
         Set::Track(0.25),
@@ -255,11 +355,11 @@ fn synthetic_table(shots: u64) {
         Set::Doppler(2.0),
     ];
     for set in sets {
-        let results: Vec<Result<[f64; 7], String>> = (0..shots)
+        let results: Vec<Result<[f64; 10], String>> = (0..shots)
             .into_par_iter()
-            .map(|k| synthetic(set, 1000 + k))
+            .map(|k| synthetic(set, 1000 + k, single))
             .collect();
-        let ok: Vec<[f64; 7]> = results
+        let ok: Vec<[f64; 10]> = results
             .iter()
             .filter_map(|r| r.as_ref().ok().copied())
             .collect();
@@ -268,8 +368,27 @@ fn synthetic_table(shots: u64) {
             Set::Doppler(_) => "(measured)".to_owned(),
             _ => format!("{:.2}°", mean(ok.iter().map(|r| r[1].abs().to_degrees()))),
         };
+        let shifts = if single {
+            let worst = |i: usize| ok.iter().map(|r| r[i].abs()).fold(0.0, f64::max);
+            let axis = match set {
+                Set::Doppler(_) => "(measured)".to_owned(),
+                _ => format!(
+                    "{:.4} / {:.4}",
+                    mean(ok.iter().map(|r| r[8].abs())),
+                    worst(8)
+                ),
+            };
+            format!(
+                " {:.4} / {:.4} | {axis} | {:.0} |",
+                mean(ok.iter().map(|r| r[7].abs())),
+                worst(7),
+                mean(ok.iter().map(|r| r[9]))
+            )
+        } else {
+            String::new()
+        };
         println!(
-            "| {} | {:.2} % | {} | {:.2} m | {:.2} / {:.2} | {:.0} | {:.0} | {} |",
+            "| {} | {:.2} % | {} | {:.2} m | {:.2} / {:.2} | {:.1} | {:.0} | {} |{shifts}",
             set.name(),
             100.0 * mean(ok.iter().map(|r| r[0].abs())),
             axis,
@@ -728,8 +847,9 @@ fn main() -> Result<(), String> {
         .iter()
         .find_map(|a| a.strip_prefix("--only="))
         .unwrap_or("all");
+    let single = args.iter().any(|a| a == "--f32");
     if only == "all" || only == "synthetic" {
-        synthetic_table(shots);
+        synthetic_table(shots, single);
     }
     if only != "synthetic" {
         drives_tables(only)?;

@@ -164,11 +164,19 @@ pub(crate) fn dormand_prince_stages<T: Real, R: Rhs<T>>(
     k1: &State<T>,
     h: T,
 ) -> Stages<T> {
-    let k2 = rhs.eval(&combine(y, h, A2, [k1]));
-    let k3 = rhs.eval(&combine(y, h, A3, [k1, &k2]));
-    let k4 = rhs.eval(&combine(y, h, A4, [k1, &k2, &k3]));
-    let k5 = rhs.eval(&combine(y, h, A5, [k1, &k2, &k3, &k4]));
-    let k6 = rhs.eval(&combine(y, h, A6, [k1, &k2, &k3, &k4, &k5]));
+    // Inlined where the flight's stages are (see `dormand_prince`).
+    let stage = |y: &State<T>| {
+        if inline_stages::<T>() {
+            rhs.eval_inlined(y)
+        } else {
+            rhs.eval(y)
+        }
+    };
+    let k2 = stage(&combine(y, h, A2, [k1]));
+    let k3 = stage(&combine(y, h, A3, [k1, &k2]));
+    let k4 = stage(&combine(y, h, A4, [k1, &k2, &k3]));
+    let k5 = stage(&combine(y, h, A5, [k1, &k2, &k3, &k4]));
+    let k6 = stage(&combine(y, h, A6, [k1, &k2, &k3, &k4, &k5]));
     let y1 = combine(y, h, B, [k1, &k3, &k4, &k5, &k6]);
     Stages { k3, k4, k5, k6, y1 }
 }
@@ -233,6 +241,13 @@ fn inv_root_3_16<T: Real>(x: T) -> T {
     T::one() / (r8 * r8.root())
 }
 
+/// Whether the stages' force evaluations are inlined: where the precision is in hardware
+/// (hosts, and `f32` on hard-float ARM); called where it is in software.
+#[inline(always)]
+fn inline_stages<T>() -> bool {
+    !cfg!(target_os = "none") || (cfg!(target_abi = "eabihf") && core::mem::size_of::<T>() == 4)
+}
+
 /// Adaptive Dormand–Prince 5(4) to the landing.
 pub(crate) fn dormand_prince<T: Real, R: Rhs<T>>(
     rhs: &R,
@@ -246,10 +261,8 @@ pub(crate) fn dormand_prince<T: Real, R: Rhs<T>>(
     // `eval` is inlined anyway, and `f32` on hard-float ARM: ≈ 40 instructions a call
     // saved on the Cortex-M4F, docs/performance.md); called where it is in software
     // (each copy there is kilobytes of library calls).
-    let inline = !cfg!(target_os = "none")
-        || (cfg!(target_abi = "eabihf") && core::mem::size_of::<T>() == 4);
     let stage = |y: &State<T>| {
-        if inline {
+        if inline_stages::<T>() {
             rhs.eval_inlined(y)
         } else {
             rhs.eval(y)

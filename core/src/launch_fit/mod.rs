@@ -361,7 +361,9 @@ pub struct Settings<T> {
     pub integrator: Integrator<T>,
     /// Iteration budget.
     pub max_iterations: u16,
-    /// Stop when the Newton step is below this many posterior σ.
+    /// Stop when the Newton step is below this many posterior σ (or when the cost's
+    /// predicted fall is below its rounding floor, which in f32 comes first: the fit stops
+    /// where further iterations would chase rounding).
     pub tolerance: T,
 }
 

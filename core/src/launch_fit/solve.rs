@@ -10,9 +10,10 @@
 //! `J` is the forward difference of `r` with fixed steps ([`STEP`]: large against the
 //! adaptive integrator's error, so its step-size choices do not show in the slopes), one
 //! flight per free unknown, computed once per iteration. The iteration stops when the
-//! Newton step (λ = 0) is below `tolerance` posterior σ (`√(−gᵀδ)`), or when no damping
-//! makes the cost fall (stationary to the precision); the posterior covariance is `A⁻¹`
-//! at that point.
+//! Newton step (λ = 0) is below `tolerance` posterior σ (`√(−gᵀδ)`), when the cost's
+//! predicted fall `−gᵀδ` is below the cost's rounding floor ([`rounding_floor`]: in f32 the
+//! last iterations would chase rounding), or when no damping makes the cost fall
+//! (stationary to the precision); the posterior covariance is `A⁻¹` at that point.
 
 use super::model::{Schedule, observed, predict, row_kind, shared_scene};
 use super::{
@@ -250,11 +251,14 @@ pub(super) fn run<T: Real>(
                 *v += get(p.q.as_slice(), i);
             }
         }
-        // The Newton step's decrement: converged when it is below the tolerance.
+        // The Newton step's decrement (the cost's predicted fall): converged when it is
+        // below the tolerance, or below what rounding alone moves the cost by.
         let chol = Cholesky::<T, UNKNOWNS>::factor(&a).map_err(|_| Error::IllPosed)?;
         let newton = chol.solve(&(-g)).map_err(|_| Error::IllPosed)?;
         let decrement = -g.dot(&newton);
-        if !(decrement > tolerance * tolerance) {
+        if !(decrement > tolerance * tolerance
+            && decrement > rounding_floor(&p, &ws.residual, z, sd, &x))
+        {
             break chol;
         }
         if iterations >= settings.max_iterations {
@@ -323,6 +327,40 @@ pub(super) fn run<T: Real>(
         &ws.residual,
         iterations,
     )
+}
+
+/// The cost's rounding floor: how much the cost moves when every prediction `hᵢ` and
+/// every unknown `xⱼ` moves by one relative ε of the precision,
+///
+/// ```text
+/// floor = 2ε ( Σᵢ |rᵢ| |hᵢ|/σᵢ + Σⱼ qⱼ |xⱼ − mⱼ| |xⱼ| ),   hᵢ/σᵢ = rᵢ + zᵢ/σᵢ
+/// ```
+///
+/// (the first-order change of `Σ rᵢ² + Σ qⱼ (xⱼ − mⱼ)²`). A Newton step that promises less
+/// than this cannot be told from rounding: the step's acceptance test compares costs with
+/// that much noise, and a flight carries more than one rounding of its predictions. In f64
+/// the floor is ~1e-12 and the tolerance stops the iteration; in f32 it is ~1e-4 for a
+/// launch monitor's summaries, ~1e-2 for a Doppler trace, and stops the iterations that
+/// would chase rounding (docs/launch_fit.md, "Stopping").
+fn rounding_floor<T: Real>(
+    p: &Problem<'_, T>,
+    r: &[T; MAX_ROWS],
+    z: &[T; MAX_ROWS],
+    sd: &[T; MAX_ROWS],
+    x: &V<T>,
+) -> T {
+    let rows = r
+        .iter()
+        .zip(z)
+        .zip(sd)
+        .take(p.rows)
+        .fold(T::zero(), |a, ((r, z), s)| a + (*r * (*r + *z / *s)).abs());
+    let prior = x
+        .iter()
+        .zip(p.m.iter())
+        .zip(p.q.iter())
+        .fold(T::zero(), |a, ((x, m), q)| a + (*q * (*x - *m) * *x).abs());
+    lit::<T>(2.0) * T::default_epsilon() * (rows + prior)
 }
 
 /// The spin axis's sign must be seen: observations blind to left and right (no side, no
