@@ -10,7 +10,8 @@
 //! # data (--sigma-data), the linearised spin error as a target of 1σ S (--spin-sigma=S):
 //! cargo run --release -p carry-lab --example spin_shape -- cv --sigma-data --spin-sigma=0.05
 //! # the drives' carry σ (relative; default 1.5 %): --carry-sigma=0.01
-//! # the same fit on every session (the default's coefficients): add --full
+//! # the same fit on every session (the default's coefficients): add --full (--folds=none:
+//! # no cross-validation)
 //! ```
 
 use carry_core::Scene;
@@ -474,7 +475,7 @@ fn main() {
                 spin_sigma: value("--spin-sigma=").map_or(f64::INFINITY, |v| v.parse().unwrap()),
                 folds: value("--folds=").map_or_else(
                     || (0..DRIVES_2026_WITHOUT_SESSION.len()).collect(),
-                    |v| v.split(',').map(|x| x.parse().unwrap()).collect(),
+                    |v| v.split(',').filter_map(|x| x.parse().ok()).collect(),
                 ),
                 full: args.iter().any(|a| a == "--full"),
                 weight: value("--weight=").map_or(20.0, |v| v.parse().unwrap()),
