@@ -86,9 +86,12 @@ pub const TOUR_2023: [f64; MODERN_COEFFICIENTS] = [
 /// `../shared/data/trackman_amateur_drives.csv` (carry, apex, landing angle, flight time)
 /// together with the tour table and the 2010 chart (each table row weighted 20), at the data
 /// README's 21.1 °C, 50 % RH, 101 325 Pa, with `S_low` free up to 0.4 (docs/aero.md,
-/// issue 35), rounded to 4 significant digits.
+/// issue 35); the drives' apex, landing angle and flight time weighed by their scatter
+/// about the model (0.7 m, 1.3°, 0.09 s; carry 1 %) and the launch fit's linearised spin
+/// error as a target (1σ 3 %; issue 36, docs/launch_fit.md §4); rounded to 4 significant
+/// digits.
 pub const DRIVES_2026: [f64; MODERN_COEFFICIENTS] = [
-    0.17, 0.3, 5.377e4, 0.3157, 1.5, 0.8242, 0.0119, 0.1203, 0.2351,
+    0.17, 0.3, 4.551e4, 0.2934, 1.5, 0.9271, 0.0119, 0.1377, 0.2971,
 ];
 
 /// Names of the modern family's coefficients, in the order of [`ModernAero::to_array`]

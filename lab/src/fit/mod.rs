@@ -18,6 +18,7 @@ pub mod request_contact;
 pub mod single_drives;
 pub mod single_shots;
 mod solve;
+pub mod spin_target;
 pub mod table_average;
 
 pub use bounded::{to_bounded, to_unbounded};
