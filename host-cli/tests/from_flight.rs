@@ -212,6 +212,56 @@ fn bad_and_too_few_observations_are_one_line_and_status_2() {
     }
 }
 
+/// A measured launch figure out of range names its own option (issue 34: a launch angle of
+/// 95° was reported as a spin out of range, a launch direction of 120° as a spin the
+/// observations do not determine, a spin axis of 200° as a fit that did not converge).
+#[test]
+fn launch_figures_out_of_range_name_their_option() {
+    let cases: [(&str, &str, &str); 4] = [
+        (
+            "--launch-angle",
+            "95",
+            "carry: --launch-angle: is out of range",
+        ),
+        (
+            "--launch-direction",
+            "120",
+            "carry: --launch-direction: is out of range",
+        ),
+        ("--spin-axis", "200", "carry: --spin-axis: is out of range"),
+        (
+            "--spin",
+            "-5",
+            "carry: --backspin, --sidespin, --spin: is out of range",
+        ),
+    ];
+    for (option, value, message) in cases {
+        let mut all = vec![
+            "estimate",
+            "--from",
+            "flight",
+            "--ball-speed",
+            "70",
+            "--carry",
+            "200",
+            "--side",
+            "5",
+            "--apex-height",
+            "30",
+            "--flight-time",
+            "6.5",
+        ];
+        if option != "--launch-angle" {
+            all.extend_from_slice(&["--launch-angle", "12"]);
+        }
+        all.extend_from_slice(&[option, value]);
+        let r = run(&all);
+        assert_eq!(r.code, 2, "{all:?}: {}", r.stderr);
+        assert_eq!(r.stderr.lines().count(), 1, "{}", r.stderr);
+        assert!(r.stderr.starts_with(message), "{all:?}: {}", r.stderr);
+    }
+}
+
 /// Splits a CSV text into its header and rows (no quoted commas in these).
 fn table(csv: &str) -> (Vec<String>, Vec<Vec<String>>) {
     let mut lines = csv.lines();

@@ -295,7 +295,33 @@ pub fn fit(p: &Params, n: &Numerics, r: &FlightRequest) -> Result<FlightRecord, 
     }
 }
 
+/// The measured launch figures checked against the estimator's ranges
+/// ([`carry_core::estimate::BallData::validated`]: launch angle and direction within ±90°,
+/// spin in 0–19,099 rpm, spin axis within ±180°), each error naming its own option (issue 34:
+/// a launch angle of 95° was reported as a spin out of range, a launch direction of 120° as
+/// a spin the observations do not determine). A figure not given, not finite (its own
+/// error follows) or the ball speed (the flight's own check words its bound) is checked at a
+/// neutral value that passes.
+fn launch_in_range(r: &FlightRequest) -> Result<(), InputError> {
+    let v = |g: Given, neutral: f64| match g {
+        Some((x, _)) if x.is_finite() => x,
+        _ => neutral,
+    };
+    carry_core::estimate::BallData::<f64> {
+        ball_speed_mps: 50.0,
+        launch_angle_rad: v(r.launch_angle_deg, 0.0).to_radians(),
+        launch_direction_rad: v(r.launch_direction_deg, 0.0).to_radians(),
+        // the upper bound is the flight's own (it words it)
+        spin_radps: rpm(v(r.spin_rpm, 0.0)).min(1000.0),
+        spin_axis_rad: v(r.spin_axis_deg, 0.0).to_radians(),
+    }
+    .validated()
+    .map(|_| ())
+    .map_err(InputError::from)
+}
+
 fn fit_in<T: Real>(p: &Params, n: &Numerics, r: &FlightRequest) -> Result<FlightRecord, Failure> {
+    launch_in_range(r)?;
     let ball = compute::ball::<T>(p)?;
     let scene = carry_io::scene::build::<T>(&p.scene)?;
     let measured: MeasuredLaunch<T> = LaunchValues {

@@ -37,6 +37,7 @@ plus ``errors``: an object array holding ``None`` or the message of a row that f
 import csv as _csv
 import math as _math
 import os as _os
+import re as _re
 import tempfile as _tempfile
 import warnings as _warnings
 from typing import Any as _Any, Dict as _Dict, Mapping as _Mapping
@@ -48,6 +49,7 @@ from . import _carry
 __all__ = [
     "impact", "flight", "shot", "estimate", "fit", "optimize", "sweep", "dispersion", "normalize",
     "launch_from_flight", "columns", "inputs", "ShotError", "LaunchFitError",
+    "InconsistentDataError",
 ]
 __version__ = "0.1.0"
 
@@ -66,6 +68,31 @@ class ShotError(ValueError):
         super().__init__(f"row {index}: {message}" if index else message)
         self.index = index
         self.message = message
+
+
+class InconsistentDataError(ShotError):
+    """:func:`estimate` with ``raise_on_error=True`` on a row whose data disagree with each
+    other or with the club (issue 34; docs/estimate.md §8): the consistency check failed.
+    :attr:`datum` names the worst datum as its argument (``"club_speed"``, ``"ball_speed"``,
+    …, or ``"club"`` when the ball data need a delivery far from the club's typical one),
+    :attr:`sd` by how many of its σ the most probable delivery misses it, :attr:`chi2` and
+    :attr:`bound` the χ² test. A :class:`ShotError`, so code that catches that still does."""
+
+    def __init__(self, index: tuple, message: str) -> None:
+        super().__init__(index, message)
+        self.datum = message.partition(": ")[0]
+        found = _re.search(r"χ² ([0-9.eE+-]+) of \d+ data, bound ([0-9.eE+-]+)", message)
+        worst = _re.search(r"worst ([0-9.eE+-]+)σ", message)
+        self.chi2 = float(found.group(1)) if found else _math.nan
+        self.bound = float(found.group(2)) if found else _math.nan
+        self.sd = float(worst.group(1)) if worst else _math.nan
+
+
+def _inconsistent(message: str) -> bool:
+    """Whether a row's error is the estimator's consistency check (lab's
+    ``request::inconsistent`` words it)."""
+    return ": disagrees with the other data (" in message or \
+        "the ball data disagree with this club" in message
 
 
 class LaunchFitError(ValueError):
@@ -179,7 +206,10 @@ def _run(mode: str, kwargs: _Mapping[str, _Any], raise_on_error: bool) -> _Dict[
     keys, data, failed = _carry.run(mode, names, flat, options, rows)
     if raise_on_error and failed:
         i, message = failed[0]
-        raise ShotError(tuple(int(j) for j in _np.unravel_index(i, shape)), message)
+        index = tuple(int(j) for j in _np.unravel_index(i, shape))
+        if mode == "estimate" and _inconsistent(message):
+            raise InconsistentDataError(index, message)
+        raise ShotError(index, message)
     # Column views of the (rows, columns) result: no copy.
     out: _Dict[str, _Any] = {k: data[:, j].reshape(shape) for j, k in enumerate(keys)}
     err = _np.full(rows, None, dtype=object)
@@ -242,6 +272,10 @@ def estimate(*, raise_on_error: bool = False, **kwargs: _Any) -> _Dict[str, _np.
     ``impact_height_m``, ``club_speed_mps``, ``smash_factor``), ``club_speed_estimated``
     (1 where the club speed was not measured), the residuals (modelled − measured ball
     data) and ``iterations``.
+    A row whose data disagree with each other or with the club (the consistency check,
+    docs/estimate.md §8) has NaN numbers and its ``errors`` entry names the worst datum
+    (``"club_speed: disagrees with the other data (χ² …; worst 45.6σ, bound 4σ)"``); with
+    ``raise_on_error=True`` it raises :class:`InconsistentDataError`.
     """
     return _run("estimate", kwargs, raise_on_error)
 

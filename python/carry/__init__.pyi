@@ -251,6 +251,13 @@ def normalize(**kwargs: Any) -> Dict[str, Any]:
     ...
 
 
+class InconsistentDataError(ShotError):
+    datum: str
+    sd: float
+    chi2: float
+    bound: float
+    def __init__(self, index: tuple, message: str) -> None: ...
+
 class LaunchFitError(ValueError):
     option: str
     message: str

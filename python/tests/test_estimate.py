@@ -96,3 +96,24 @@ def test_the_posterior_summary_is_a_setting(cli):
         carry.estimate(posterior="mean", **options)
     with pytest.raises(ValueError, match="^posterior: is not an argument of carry.flight"):
         carry.flight(ball_speed=66.5, launch_angle=13.2, spin=2900, posterior="laplace")
+
+
+def test_inconsistent_data_are_flagged_naming_the_worst_datum():
+    # Issue 34's example: a 70 m/s ball from a 5 m/s club. The row fails (NaN numbers, an
+    # error naming the club speed); raise_on_error raises the typed InconsistentDataError.
+    bad = dict(ball_speed=70.0, launch_angle=12.0, spin=2800, spin_axis=0.0, club_speed=5.0)
+    e = carry.estimate(**bad)
+    assert np.isnan(e["club_speed_mps"]) and "disagree" in e["errors"].item()
+    with pytest.raises(carry.InconsistentDataError) as info:
+        carry.estimate(raise_on_error=True, **bad)
+    err = info.value
+    assert isinstance(err, carry.ShotError) and isinstance(err, ValueError)
+    assert err.datum in ("club_speed", "ball_speed"), err.message
+    assert err.sd > 4.0 and err.chi2 > err.bound > 0.0
+    # The same shot with a club speed that fits is not flagged.
+    ok = carry.estimate(raise_on_error=True, **dict(bad, club_speed=47.0))
+    assert np.isfinite(ok["club_speed_mps"]) and ok["errors"].item() is None
+    # Other failures stay plain ShotErrors.
+    with pytest.raises(carry.ShotError) as info:
+        carry.estimate(ball_speed=np.nan, launch_angle=12.0, spin=2700, raise_on_error=True)
+    assert not isinstance(info.value, carry.InconsistentDataError)

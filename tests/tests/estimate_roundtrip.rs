@@ -507,3 +507,52 @@ fn consistency_check_flags_its_tail_and_inconsistent_club_speed() {
     // measured 68.8 %: an off-centre strike explains part of a low smash factor
     assert!(share(off_flags) >= 0.5, "{off_flags}");
 }
+
+/// Issue 34's example through the core in f32 and f64, with the driver's defaults
+/// (`Settings::for_preset`): a 70 m/s ball, 12°, 2,800 rpm, axis 0°, from a measured club
+/// speed of 5 m/s, is flagged, the worst datum the ball or club speed, missed by > 4σ, with a
+/// χ² far above its bound; the same ball from a club speed that fits (47 m/s) passes.
+#[test]
+fn the_issues_inconsistent_example_is_flagged_in_both_precisions() {
+    use carry_core::estimate::Datum;
+    let p = PRESETS.iter().find(|p| p.name == "driver").expect("driver");
+    let settings = Settings::<f64>::for_preset(p);
+    let y = BallData {
+        ball_speed_mps: 70.0,
+        launch_angle_rad: 12f64.to_radians(),
+        launch_direction_rad: 0.0,
+        spin_radps: 2800.0 * core::f64::consts::PI / 30.0,
+        spin_axis_rad: 0.0,
+    };
+    let club = |v: f64| ClubData {
+        club_speed_mps: Some(v),
+        ..ClubData::default()
+    };
+    fn verdict<T: Real>(e: &Estimate<T>) -> (bool, Datum, f64, f64, f64) {
+        let c = e.consistency;
+        (
+            c.consistent,
+            c.worst,
+            to_f64(c.worst_sd),
+            to_f64(c.chi2),
+            to_f64(c.bound),
+        )
+    }
+    let bad = [
+        verdict(&run::<f64>(p, &y, &club(5.0), &settings).expect("f64")),
+        verdict(&run::<f32>(p, &y, &club(5.0), &settings).expect("f32")),
+    ];
+    for (consistent, worst, sd, chi2, bound) in bad {
+        assert!(!consistent);
+        assert!(
+            matches!(worst, Datum::BallSpeed | Datum::ClubSpeed),
+            "{worst:?}"
+        );
+        assert!(sd > 4.0 && chi2 > bound, "{sd} {chi2} {bound}");
+    }
+    assert_eq!(bad[0].1, bad[1].1, "f32 and f64 name the same datum");
+    let good = run::<f64>(p, &y, &club(47.0), &settings).expect("f64");
+    assert!(good.checked().is_ok(), "{:?}", good.consistency);
+    let good = run::<f32>(p, &y, &club(47.0), &settings).expect("f32");
+    assert!(good.checked().is_ok(), "{:?}", good.consistency);
+}
