@@ -504,8 +504,16 @@ fn launch_from_flight_op<T: Api>(b: &mut Bytes<'_>) -> CarryError {
     i.scene.aero = selector(b, 2);
     i.settings.integrator = selector(b, 3);
     if i.settings.integrator != CARRY_INTEGRATOR_DP45 {
-        // fixed steps of 5 ms or coarser: bounded work
-        i.settings.step_s = f(b, 5e-3, 0.05);
+        // fixed steps of 5 ms or coarser: bounded work. `param` also draws special values
+        // and raw bits: a positive step below 5 ms is legal but slow (a subnormal step
+        // never reaches the 60 s limit: an explorer's timeout, 2026-11-28), so it is raised
+        // to 5 ms; zero, negative and non-finite steps stay (they are refused at once).
+        let step: T = f(b, 5e-3, 0.05);
+        i.settings.step_s = if step > T::zero() && step < lit(5e-3) {
+            lit(5e-3)
+        } else {
+            step
+        };
     }
     let mut w = Box::new(CarryLaunchFromFlightWorkspace {
         scratch: [T::zero(); carry_ffi::launch_fit::CARRY_LAUNCH_FIT_WORKSPACE_LEN],
