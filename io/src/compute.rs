@@ -97,16 +97,7 @@ pub struct Numerics {
     pub posterior: PosteriorChoice,
 }
 
-/// What a run computes.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Mode {
-    /// Delivery → launch.
-    Impact,
-    /// Launch → flight.
-    Flight,
-    /// Delivery → launch → flight.
-    Shot,
-}
+pub use crate::mode::Mode;
 
 impl Numerics {
     /// Checks option combinations that do not depend on a shot.

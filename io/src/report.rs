@@ -1,7 +1,7 @@
 //! Results in `f64`, SI: the JSON contract (serde) and the CSV columns (one field visitor,
 //! [`visit_fields`]). The launch-monitor table for people is the CLI's.
 
-use crate::compute::Mode;
+use crate::mode::Mode;
 use carry_core::ground::{Rollout, RunEnd};
 use carry_core::real::to_f64;
 use carry_core::units::{to_deg, to_rpm};
@@ -416,38 +416,6 @@ mod tests {
     fn integers() {
         for n in [0u32, 7, 10, 4_294_967_295] {
             assert_eq!(itoa_u32(n).as_bytes_mut(), n.to_string().as_bytes());
-        }
-    }
-
-    /// The numeric row matches the CSV row, column for column, in every mode.
-    #[test]
-    fn csv_values_follow_the_csv_columns() {
-        use crate::compute::{Numerics, run};
-        use crate::params::{Key, Params};
-        use crate::units::Units;
-        let mut p = Params::default();
-        Key::Ground.set(
-            &mut p,
-            Units::Si,
-            Key::Ground.parse("fairway").expect("a surface"),
-        );
-        for mode in [Mode::Impact, Mode::Flight, Mode::Shot] {
-            let r = run(mode, &p, &Numerics::default()).expect("the defaults fly");
-            let ground = mode != Mode::Impact;
-            let mut values = Vec::new();
-            csv_values(&mut values, mode, ground, &r);
-            let text = String::from_utf8(single_csv(mode, &r)).expect("UTF-8");
-            let row: Vec<&str> = text.lines().nth(1).unwrap_or_default().split(',').collect();
-            assert_eq!(values.len(), csv_columns(mode, ground).len());
-            assert_eq!(values.len(), row.len());
-            for (v, t) in values.iter().zip(row) {
-                let t = match t {
-                    "true" => 1.0,
-                    "false" => 0.0,
-                    t => t.parse().expect("a number"),
-                };
-                assert_eq!(*v, t);
-            }
         }
     }
 }
