@@ -69,6 +69,17 @@ pub struct Strike<T: Real> {
 }
 
 impl<T: Real> FaceLocation<T> {
+    /// This location, checked: both coordinates finite (whether it is on the face is the
+    /// club's to say, in the impact).
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] naming the non-finite coordinate.
+    pub(crate) fn validated(&self) -> Result<()> {
+        finite(self.height_m, Field::ImpactHeight)?;
+        finite(self.toe_m, Field::ImpactToe)?;
+        Ok(())
+    }
+
     /// The face centre.
     #[must_use]
     pub fn centre() -> Self {
@@ -122,8 +133,7 @@ impl<T: Real> Delivery<T> {
         // rotations built from finite angles, a rotation to a few ulps), and the rotation test
         // (`R Rᵀ − I`, `det R`) cost ≈ 200 instructions of a 10k-instruction shot on a
         // Cortex-M4F (docs/performance.md). The ball at rest needs no check; the location does.
-        finite(self.location.height_m, Field::ImpactHeight)?;
-        finite(self.location.toe_m, Field::ImpactToe)?;
+        self.location.validated()?;
         Ok(Strike {
             club: ClubMotion {
                 velocity_mps: velocity,
@@ -156,8 +166,7 @@ impl<T: Real> Strike<T> {
             return Err(Error::invalid(Field::ClubOrientation, Reason::NotRotation));
         }
         ball.validated()?;
-        finite(location.height_m, Field::ImpactHeight)?;
-        finite(location.toe_m, Field::ImpactToe)?;
+        location.validated()?;
         Ok(Self {
             club,
             ball,

@@ -126,6 +126,23 @@ pub(crate) fn start_state<T: Real>(
     Ok(([p0.x, p0.y, p0.z, v0.x, v0.y, v0.z, spin], axis))
 }
 
+/// The carry `√(x² + z²)` (m) from the landing's offsets downrange and sideways, and the
+/// landing angle `atan2(−v_y, √(v_x² + v_z²))` (rad) below the horizontal. Shared by the
+/// scalar flight and the lanes kernel, which must agree bit for bit. No `hypot`: metres and
+/// metres per second are far from overflow, and libm's is a long out-of-line call where a
+/// square root is one instruction.
+pub(crate) fn carry_and_landing_angle<T: Real>(
+    carry_x: T,
+    side: T,
+    velocity: &Vector3<T>,
+) -> (T, T) {
+    let horizontal = (velocity.x * velocity.x + velocity.z * velocity.z).root();
+    (
+        (carry_x * carry_x + side * side).root(),
+        (-velocity.y).atan2(horizontal),
+    )
+}
+
 /// The flight with the dynamics `make` builds from the runtime dynamics (the production
 /// path passes them through; the benchmark substitutes compile-time switches).
 fn run<'s, T: Real, R: Rhs<T>>(
@@ -209,17 +226,15 @@ fn run<'s, T: Real, R: Rhs<T>>(
             &mut ground,
         )?;
     }
+    let (carry_m, landing_angle_rad) = carry_and_landing_angle(carry_x, side, &velocity);
     Ok(FlightOutcome {
-        // (No `hypot`: metres and metres per second, far from overflow; libm's is a long
-        // out-of-line call where a square root is one instruction.)
-        carry_m: (carry_x * carry_x + side * side).root(),
+        carry_m,
         carry_x_m: carry_x,
         side_m: side,
         apex_m,
         apex_time_s,
         flight_time_s: landing.time,
-        landing_angle_rad: (-velocity.y)
-            .atan2((velocity.x * velocity.x + velocity.z * velocity.z).root()),
+        landing_angle_rad,
         landing_speed_mps: length(&velocity),
         landing_spin_radps: y[S],
         landing_position_m: position,

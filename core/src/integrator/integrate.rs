@@ -164,19 +164,11 @@ pub(crate) fn dormand_prince_stages<T: Real, R: Rhs<T>>(
     k1: &State<T>,
     h: T,
 ) -> Stages<T> {
-    // Inlined where the flight's stages are (see `dormand_prince`).
-    let stage = |y: &State<T>| {
-        if inline_stages::<T>() {
-            rhs.eval_inlined(y)
-        } else {
-            rhs.eval(y)
-        }
-    };
-    let k2 = stage(&combine(y, h, A2, [k1]));
-    let k3 = stage(&combine(y, h, A3, [k1, &k2]));
-    let k4 = stage(&combine(y, h, A4, [k1, &k2, &k3]));
-    let k5 = stage(&combine(y, h, A5, [k1, &k2, &k3, &k4]));
-    let k6 = stage(&combine(y, h, A6, [k1, &k2, &k3, &k4, &k5]));
+    let k2 = stage(rhs, &combine(y, h, A2, [k1]));
+    let k3 = stage(rhs, &combine(y, h, A3, [k1, &k2]));
+    let k4 = stage(rhs, &combine(y, h, A4, [k1, &k2, &k3]));
+    let k5 = stage(rhs, &combine(y, h, A5, [k1, &k2, &k3, &k4]));
+    let k6 = stage(rhs, &combine(y, h, A6, [k1, &k2, &k3, &k4, &k5]));
     let y1 = combine(y, h, B, [k1, &k3, &k4, &k5, &k6]);
     Stages { k3, k4, k5, k6, y1 }
 }
@@ -241,11 +233,18 @@ fn inv_root_3_16<T: Real>(x: T) -> T {
     T::one() / (r8 * r8.root())
 }
 
-/// Whether the stages' force evaluations are inlined: where the precision is in hardware
-/// (hosts, and `f32` on hard-float ARM); called where it is in software.
+/// One Dormand–Prince stage's force evaluation: inlined where the precision is in hardware
+/// (hosts, where `eval` is inlined anyway, and `f32` on hard-float ARM: ≈ 40 instructions a
+/// call saved on the Cortex-M4F, docs/performance.md); called where it is in software (each
+/// copy there is kilobytes of library calls).
 #[inline(always)]
-fn inline_stages<T>() -> bool {
-    !cfg!(target_os = "none") || (cfg!(target_abi = "eabihf") && core::mem::size_of::<T>() == 4)
+fn stage<T: Real, R: Rhs<T>>(rhs: &R, y: &State<T>) -> State<T> {
+    if !cfg!(target_os = "none") || (cfg!(target_abi = "eabihf") && core::mem::size_of::<T>() == 4)
+    {
+        rhs.eval_inlined(y)
+    } else {
+        rhs.eval(y)
+    }
 }
 
 /// Adaptive Dormand–Prince 5(4) to the landing.
@@ -257,17 +256,6 @@ pub(crate) fn dormand_prince<T: Real, R: Rhs<T>>(
     tracker: &mut Tracker<'_, '_, T>,
     stats: &mut Stats,
 ) -> Result<Landing<T>> {
-    // The stages' evaluations inlined where the precision is in hardware (hosts, where
-    // `eval` is inlined anyway, and `f32` on hard-float ARM: ≈ 40 instructions a call
-    // saved on the Cortex-M4F, docs/performance.md); called where it is in software
-    // (each copy there is kilobytes of library calls).
-    let stage = |y: &State<T>| {
-        if inline_stages::<T>() {
-            rhs.eval_inlined(y)
-        } else {
-            rhs.eval(y)
-        }
-    };
     let mut cfg = cfg;
     let mut y = y0;
     // (Called, not inlined: once a flight, and a seventh inlined copy cost the M4F's
@@ -292,16 +280,16 @@ pub(crate) fn dormand_prince<T: Real, R: Rhs<T>>(
         h = below(h, remaining);
         // The stages written out (as `dormand_prince_stages`): through the shared function
         // the compiler keeps the stages in memory, which costs the flight (docs/flight.md).
-        let k2 = stage(&combine(&y, h, A2, [&k1]));
-        let k3 = stage(&combine(&y, h, A3, [&k1, &k2]));
-        let k4 = stage(&combine(&y, h, A4, [&k1, &k2, &k3]));
-        let k5 = stage(&combine(&y, h, A5, [&k1, &k2, &k3, &k4]));
-        let k6 = stage(&combine(&y, h, A6, [&k1, &k2, &k3, &k4, &k5]));
+        let k2 = stage(rhs, &combine(&y, h, A2, [&k1]));
+        let k3 = stage(rhs, &combine(&y, h, A3, [&k1, &k2]));
+        let k4 = stage(rhs, &combine(&y, h, A4, [&k1, &k2, &k3]));
+        let k5 = stage(rhs, &combine(&y, h, A5, [&k1, &k2, &k3, &k4]));
+        let k6 = stage(rhs, &combine(&y, h, A6, [&k1, &k2, &k3, &k4, &k5]));
         let y1 = combine(&y, h, B, [&k1, &k3, &k4, &k5, &k6]);
         // The error test's weights need only y₀ and y₁: their divisions run beside the
         // last evaluation instead of after it.
         let weight = error_weights(&y, &y1, &cfg);
-        let k7 = stage(&y1);
+        let k7 = stage(rhs, &y1);
         stats.force_evaluations = stats.force_evaluations.saturating_add(6);
         let err = scaled_error(h, [&k1, &k3, &k4, &k5, &k6, &k7], &weight);
         if err <= T::one() && crate::real::all_finite(&y1) {

@@ -423,16 +423,16 @@ fn outcome<T: Real>(lane: &Lane<'_, T>, landing: &Landing<T>) -> Result<FlightOu
     let carry_x = position.x - p0.x;
     let side = position.z - p0.z;
     let spin = y[crate::aero::S];
+    let (carry_m, landing_angle_rad) =
+        crate::flight::carry_and_landing_angle(carry_x, side, &velocity);
     Ok(FlightOutcome {
-        // As the scalar path (flight/mod.rs): a square root, not `hypot`, bit for bit.
-        carry_m: (carry_x * carry_x + side * side).root(),
+        carry_m,
         carry_x_m: carry_x,
         side_m: side,
         apex_m,
         apex_time_s,
         flight_time_s: landing.time,
-        landing_angle_rad: (-velocity.y)
-            .atan2((velocity.x * velocity.x + velocity.z * velocity.z).root()),
+        landing_angle_rad,
         landing_speed_mps: length(&velocity),
         landing_spin_radps: spin,
         landing_position_m: position,
