@@ -1,7 +1,8 @@
 //! The `carry` command line: a shell over carry-io (options, runs, records, batch) and
 //! carry-lab (analyses, fits). [`run`] parses (clap), dispatches and maps errors to one
 //! line on stderr and an exit status (0 ok, 1 I/O, 2 invalid input; never a panic); the
-//! binary (`src/main.rs`) is a thin shell over it. What is here: the grammar ([`cli`] and
+//! binary (`src/main.rs`) is a thin shell over it. What is here: the grammar ([`cli`], the
+//! option groups its commands and the analyses share ([`args`]) and
 //! the commands' clap structs), the human table ([`table`]), plots ([`plot`]) and exit
 //! codes. The modules are public for the fuzz target that fuzzes the grammar
 //! (`fuzz/fuzz_targets/cli.rs`); no other crate depends on this one.
@@ -9,6 +10,7 @@
 #![allow(missing_docs)]
 
 pub mod analyses;
+pub mod args;
 use carry_io::{batch, compute, error, params, report};
 pub mod cli;
 pub mod clubs;

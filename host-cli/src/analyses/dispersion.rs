@@ -1,7 +1,7 @@
 //! `carry dispersion`: Monte-Carlo over delivery noise.
 
 use super::{ShotArgs, output, write_svg};
-use crate::cli::OutputArgs;
+use crate::args::OutputArgs;
 use carry_io::error::Failure;
 use carry_io::units::{Quantity, Units};
 use carry_lab::dispersion::{self, Dispersion};

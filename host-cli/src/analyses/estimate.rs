@@ -3,7 +3,7 @@
 
 use super::from_flight::FlightObsArgs;
 use super::output;
-use crate::cli::{ClubArgs, LaunchArgs, OutputArgs, PrecisionArgs, SceneArgs};
+use crate::args::{ClubArgs, LaunchArgs, OutputArgs, PrecisionArgs, SceneArgs};
 use carry_io::compute::{Numerics, PosteriorChoice};
 use carry_io::error::Failure;
 use carry_io::params::{Key, Params};
@@ -206,7 +206,7 @@ pub(crate) fn csv_text(text: &str) -> String {
 ///
 /// # Errors
 /// A bad file or header (status 2), failing to write (status 1).
-pub fn batch(args: &crate::cli::BatchArgs, cmd: &EstimateCmd) -> Result<(), Failure> {
+pub fn batch(args: &crate::args::BatchArgs, cmd: &EstimateCmd) -> Result<(), Failure> {
     use carry_io::batch::Columns;
     use carry_io::compute::Mode;
     use carry_io::error::InputError;

@@ -5,7 +5,7 @@
 //! observations from the options below and `--track FILE.csv`.
 
 use super::output;
-use crate::cli::{LaunchArgs, OutputArgs, PrecisionArgs, SceneArgs};
+use crate::args::{LaunchArgs, OutputArgs, PrecisionArgs, SceneArgs};
 use carry_io::compute::Numerics;
 use carry_io::error::{Failure, InputError};
 use carry_io::params::Params;
@@ -355,7 +355,7 @@ fn given_mut(r: &mut FlightRequest, i: usize) -> Option<&mut lf::Given> {
 /// # Errors
 /// A bad file or header (status 2), failing to write (status 1).
 pub fn batch(
-    args: &crate::cli::BatchArgs,
+    args: &crate::args::BatchArgs,
     cmd: &super::estimate::EstimateCmd,
 ) -> Result<(), Failure> {
     use carry_io::batch::Columns;

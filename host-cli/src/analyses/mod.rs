@@ -10,7 +10,7 @@ pub mod optimize;
 mod output;
 pub mod sweep;
 
-use crate::cli::{ClubArgs, DeliveryArgs, IntegratorArgs, PrecisionArgs, SceneArgs, SolverArgs};
+use crate::args::{ClubArgs, DeliveryArgs, IntegratorArgs, PrecisionArgs, SceneArgs, SolverArgs};
 use carry_io::compute::Numerics;
 use carry_io::error::{Failure, InputError};
 use carry_io::params::Params;
@@ -44,7 +44,7 @@ impl ShotArgs {
         self.club.apply(&mut p, units);
         self.delivery.apply(&mut p, units);
         self.scene.apply(&mut p, units)?;
-        let n = crate::cli::numerics(&self.precision, Some(&self.solver), Some(&self.integrator))?;
+        let n = crate::args::numerics(&self.precision, Some(&self.solver), Some(&self.integrator))?;
         Ok((p, n))
     }
 }

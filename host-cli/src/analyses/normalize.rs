@@ -1,7 +1,7 @@
 //! `carry normalize`: a launch's carry in standard conditions, and back.
 
 use super::output;
-use crate::cli::{BallArgs, IntegratorArgs, LaunchArgs, OutputArgs, PrecisionArgs, SceneArgs};
+use crate::args::{BallArgs, IntegratorArgs, LaunchArgs, OutputArgs, PrecisionArgs, SceneArgs};
 use carry_io::error::Failure;
 use carry_io::params::Params;
 use carry_io::units::{Quantity, Units};
@@ -51,7 +51,7 @@ impl NormalizeCmd {
         self.ball.apply(&mut p, u);
         self.launch.apply(&mut p, u);
         self.scene.apply(&mut p, u)?;
-        let n = crate::cli::numerics(&self.precision, None, Some(&self.integrator))?;
+        let n = crate::args::numerics(&self.precision, None, Some(&self.integrator))?;
         let to = match self.to {
             To::Standard => carry_lab::request::To::Standard,
             To::Conditions => carry_lab::request::To::Conditions,

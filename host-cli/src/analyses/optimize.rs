@@ -2,7 +2,7 @@
 
 use super::dispersion::{MonteCarloArgs, NoiseArgs};
 use super::{ShotArgs, output, parse_pair, parse_triple, print_notes, write_svg};
-use crate::cli::OutputArgs;
+use crate::args::OutputArgs;
 use carry_io::error::Failure;
 use carry_io::units::{Quantity, Units};
 use carry_lab::optimize::{self, Chart, Optimum};

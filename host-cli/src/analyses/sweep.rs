@@ -1,7 +1,7 @@
 //! `carry sweep`: a swing file against a range of ball positions.
 
 use super::{ShotArgs, output, parse_triple, print_notes, write_svg};
-use crate::cli::OutputArgs;
+use crate::args::OutputArgs;
 use carry_io::error::Failure;
 use carry_io::units::{Quantity, Units};
 use carry_lab::request::SweepRequest;
