@@ -578,22 +578,7 @@ pub fn fit_rows(
     n: &Numerics,
     threads: Option<usize>,
 ) -> Result<Vec<Result<FlightRecord, InputError>>, Failure> {
-    use rayon::prelude::*;
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(threads.unwrap_or(0))
-        .build()
-        .map_err(|e| Failure::Other(e.to_string()))?;
-    Ok(pool.install(|| {
-        rows.par_iter()
-            .map(|row| {
-                let (p, r) = row.as_ref().map_err(Clone::clone)?;
-                fit(p, n, r).map_err(|e| match e {
-                    Failure::Input(e) => e,
-                    other => InputError::new("launch_fit", format!("{other:?}")),
-                })
-            })
-            .collect()
-    }))
+    crate::rows::par_rows(rows, threads, "launch_fit", |p, r| fit(p, n, r))
 }
 
 /// The core's errors of the fit, naming the option that can fix them.

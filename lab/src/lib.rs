@@ -39,6 +39,7 @@ pub mod launch_fit;
 pub mod normalize;
 pub mod optimize;
 pub mod request;
+pub mod rows;
 pub mod setup;
 pub mod study;
 pub mod sweep;

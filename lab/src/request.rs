@@ -960,20 +960,5 @@ pub fn estimate_rows(
     n: &Numerics,
     threads: Option<usize>,
 ) -> Result<Vec<Result<EstimateRecord, InputError>>, Failure> {
-    use rayon::prelude::*;
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(threads.unwrap_or(0))
-        .build()
-        .map_err(|e| Failure::Other(e.to_string()))?;
-    Ok(pool.install(|| {
-        rows.par_iter()
-            .map(|row| {
-                let (p, club) = row.as_ref().map_err(Clone::clone)?;
-                estimate(p, n, club).map_err(|e| match e {
-                    Failure::Input(e) => e,
-                    other => InputError::new("estimate", format!("{other:?}")),
-                })
-            })
-            .collect()
-    }))
+    crate::rows::par_rows(rows, threads, "estimate", |p, club| estimate(p, n, club))
 }
