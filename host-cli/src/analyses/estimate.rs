@@ -189,15 +189,6 @@ const CLUB_COLUMNS: [(&str, bool, usize); 10] = [
     ("dynamic_loft_deg", true, 4),
 ];
 
-/// A CSV cell: quoted when it holds a comma, a quote or a line break.
-pub(crate) fn csv_text(text: &str) -> String {
-    if text.contains([',', '"', '\n', '\r']) {
-        format!("\"{}\"", text.replace('"', "\"\""))
-    } else {
-        text.to_owned()
-    }
-}
-
 /// `carry batch estimate`: one estimate per input row, in parallel. Input columns: the
 /// launch as in `carry batch flight` (option names in snake_case, or another batch's SI
 /// output columns) plus any of the measured club columns (`club_speed`, `attack_angle`,
@@ -211,7 +202,14 @@ pub fn batch(args: &crate::args::BatchArgs, cmd: &EstimateCmd) -> Result<(), Fai
     use carry_io::compute::Mode;
     use carry_io::error::InputError;
     if cmd.from == EstimateFrom::Flight {
-        return super::from_flight::batch(args, cmd);
+        return super::from_flight::batch(
+            args,
+            &cmd.launch,
+            &cmd.flight,
+            &cmd.scene,
+            &cmd.precision,
+            &cmd.output,
+        );
     }
     let u = cmd.output.units;
     let mut base = Params::default();
@@ -331,68 +329,20 @@ pub fn batch(args: &crate::args::BatchArgs, cmd: &EstimateCmd) -> Result<(), Fai
     };
     let inputs: Vec<_> = records.iter().map(row).collect();
     let results = carry_lab::request::estimate_rows(&inputs, &numerics, args.threads)?;
-    let mut out = String::new();
-    let label = cols.label;
-    if !cmd.output.json {
-        out.push_str("line");
-        if label.is_some() {
-            out.push_str(",label");
-        }
-        for c in EstimateRecord::COLUMNS.iter().chain(&["error"]) {
-            out.push(',');
-            out.push_str(c);
-        }
-        out.push('\n');
-    }
-    for (rec, result) in records.iter().zip(&results) {
-        let line = rec.position().map_or(0, csv::Position::line);
-        let label_text = label
+    let label_of = |rec: &csv::ByteRecord| {
+        cols.label
             .and_then(|i| launch_idx.get(i))
             .and_then(|&i| rec.get(i))
-            .map(|l| String::from_utf8_lossy(l).into_owned());
-        if cmd.output.json {
-            let mut obj = serde_json::Map::new();
-            obj.insert("line".into(), line.into());
-            if let Some(l) = &label_text {
-                obj.insert("label".into(), l.clone().into());
-            }
-            match result {
-                Ok(r) => {
-                    if let Ok(serde_json::Value::Object(fields)) = serde_json::to_value(r) {
-                        obj.extend(fields);
-                    }
-                }
-                Err(e) => {
-                    obj.insert(
-                        "error".into(),
-                        format!("line {line}: {}", e.as_column()).into(),
-                    );
-                }
-            }
-            out.push_str(&serde_json::Value::Object(obj).to_string());
-            out.push('\n');
-        } else {
-            let _ = write!(out, "{line}");
-            if label.is_some() {
-                let _ = write!(out, ",{}", csv_text(label_text.as_deref().unwrap_or("")));
-            }
-            match result {
-                Ok(r) => {
-                    for v in r.values() {
-                        let _ = write!(out, ",{v}");
-                    }
-                    out.push_str(",\n");
-                }
-                Err(e) => {
-                    out.push_str(&",".repeat(EstimateRecord::COLUMNS.len()));
-                    let _ = writeln!(
-                        out,
-                        ",{}",
-                        csv_text(&format!("line {line}: {}", e.as_column()))
-                    );
-                }
-            }
-        }
-    }
+            .map(|l| String::from_utf8_lossy(l).into_owned())
+    };
+    let out = output::batch_table(
+        &records,
+        &results,
+        cols.label.is_some(),
+        label_of,
+        &EstimateRecord::COLUMNS,
+        |r| r.values().iter().map(f64::to_string).collect(),
+        cmd.output.json,
+    );
     crate::write_stdout(out.as_bytes())
 }

@@ -356,20 +356,24 @@ fn given_mut(r: &mut FlightRequest, i: usize) -> Option<&mut lf::Given> {
 /// A bad file or header (status 2), failing to write (status 1).
 pub fn batch(
     args: &crate::args::BatchArgs,
-    cmd: &super::estimate::EstimateCmd,
+    launch: &LaunchArgs,
+    obs: &FlightObsArgs,
+    scene: &SceneArgs,
+    precision: &PrecisionArgs,
+    output: &OutputArgs,
 ) -> Result<(), Failure> {
     use carry_io::batch::Columns;
     use carry_io::compute::Mode;
-    let u = cmd.output.units;
+    let u = output.units;
     let mut base = Params::default();
-    cmd.scene.apply(&mut base, u)?;
+    scene.apply(&mut base, u)?;
     let n = Numerics {
-        precision: cmd.precision.precision,
+        precision: precision.precision,
         ..Numerics::default()
     };
-    let request = cmd.flight.request(&cmd.launch, u)?;
+    let request = obs.request(launch, u)?;
     // the 1σ of a value a row gives without its own `_sd`: the option's, else the default
-    let o = &cmd.flight;
+    let o = obs;
     let option_sd = [
         o.ball_speed_sd,
         o.launch_angle_sd,
@@ -506,71 +510,20 @@ pub fn batch(
     };
     let inputs: Vec<_> = records.iter().map(row).collect();
     let results = lf::fit_rows(&inputs, &n, args.threads)?;
-    let mut out = String::new();
-    let label = cols.label;
-    if !cmd.output.json {
-        out.push_str("line");
-        if label.is_some() {
-            out.push_str(",label");
-        }
-        for c in FlightRecord::COLUMNS.iter().chain(&["error"]) {
-            out.push(',');
-            out.push_str(c);
-        }
-        out.push('\n');
-    }
-    for (rec, result) in records.iter().zip(&results) {
-        let line = rec.position().map_or(0, csv::Position::line);
-        let label_text = label
+    let label_of = |rec: &csv::ByteRecord| {
+        cols.label
             .and_then(|i| rest_idx.get(i))
             .and_then(|&i| rec.get(i))
-            .map(|l| String::from_utf8_lossy(l).into_owned());
-        let error = result
-            .as_ref()
-            .err()
-            .map(|e| format!("line {line}: {}", e.as_column()));
-        if cmd.output.json {
-            let mut obj = serde_json::Map::new();
-            obj.insert("line".into(), line.into());
-            if let Some(l) = &label_text {
-                obj.insert("label".into(), l.clone().into());
-            }
-            if let Ok(Ok(serde_json::Value::Object(fields))) =
-                result.as_ref().map(serde_json::to_value)
-            {
-                obj.extend(fields);
-            }
-            if let Some(e) = error {
-                obj.insert("error".into(), e.into());
-            }
-            out.push_str(&serde_json::Value::Object(obj).to_string());
-            out.push('\n');
-        } else {
-            let _ = write!(out, "{line}");
-            if label.is_some() {
-                let _ = write!(
-                    out,
-                    ",{}",
-                    super::estimate::csv_text(label_text.as_deref().unwrap_or(""))
-                );
-            }
-            match result {
-                Ok(r) => {
-                    for c in r.cells() {
-                        let _ = write!(out, ",{}", super::estimate::csv_text(&c));
-                    }
-                    out.push_str(",\n");
-                }
-                Err(_) => {
-                    out.push_str(&",".repeat(FlightRecord::COLUMNS.len()));
-                    let _ = writeln!(
-                        out,
-                        ",{}",
-                        super::estimate::csv_text(error.as_deref().unwrap_or(""))
-                    );
-                }
-            }
-        }
-    }
+            .map(|l| String::from_utf8_lossy(l).into_owned())
+    };
+    let out = output::batch_table(
+        &records,
+        &results,
+        cols.label.is_some(),
+        label_of,
+        &FlightRecord::COLUMNS,
+        FlightRecord::cells,
+        output.json,
+    );
     crate::write_stdout(out.as_bytes())
 }
