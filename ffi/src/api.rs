@@ -2,7 +2,7 @@
 //! over a generic function of the precision; see `defaults` for the initialisers.
 
 use crate::club::{PRESET_NAMES, preset_at, preset_named};
-use crate::error::{CARRY_OK, CarryError, Result};
+use crate::error::{CarryError, Result, code};
 use crate::flight::{self, CarrySample};
 use crate::ptr::{non_null, with, write};
 use crate::{CarryClub, CarryDelivery, impact, shot};
@@ -18,14 +18,6 @@ use carry_core::{Ball, Error, Field, Reason};
 use core::ffi::c_char;
 
 pub use crate::defaults::*;
-
-/// `CARRY_OK` or the error.
-pub(crate) fn code(r: Result<()>) -> CarryError {
-    match r {
-        Ok(()) => CARRY_OK,
-        Err(e) => e,
-    }
-}
 
 /// Number of club presets (`carry clubs`).
 #[unsafe(no_mangle)]

@@ -1,7 +1,7 @@
 //! `carry_*_default_*`: fill an input struct with the CLI's defaults.
 
-use crate::api::code;
 use crate::error::CarryError;
+use crate::error::code;
 use crate::ptr::{non_null, write};
 
 /// Writes `value` to `out`.

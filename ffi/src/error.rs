@@ -146,3 +146,11 @@ pub fn message(code: u32) -> &'static CStr {
 pub extern "C" fn carry_error_message(code: u32) -> *const c_char {
     message(code).as_ptr()
 }
+
+/// `CARRY_OK` or the error.
+pub(crate) fn code(r: Result<()>) -> CarryError {
+    match r {
+        Ok(()) => CARRY_OK,
+        Err(e) => e,
+    }
+}

@@ -36,6 +36,7 @@
 //! stops at rolling.
 
 use super::normal::Normal;
+pub use super::surface::CRATER_FADE_NORMAL_SPEED_MPS;
 use super::surface::{CraterLaw, PENNER_RESTITUTION_0, Turf};
 use crate::real::{Real, larger, length, lit, smaller};
 use nalgebra::Vector3;
@@ -49,12 +50,6 @@ const CRATER_REFERENCE_ANGLE_RAD: f64 = 44.4 * core::f64::consts::PI / 180.0;
 /// `v_n v_t / v` at the crater law's reference impact (m/s):
 /// `18.6 · sin 44.4° · cos 44.4°` = 9.298 m/s.
 const CRATER_REFERENCE_NORMAL_TANGENTIAL_MPS: f64 = 9.297_960;
-/// Normal speed below which the crater tilt fades out linearly (m/s). Issue 12 took
-/// Penner's reference impact's, 18.6 m/s · cos 44.4° = 13.29 m/s; 6 m/s matches
-/// TrackMan's roll after shallow landings (a 15° landing at 27 m/s rolls 40 yd; the
-/// issue-21 band figures and topped drives; the sweep is in docs/ground.md). Landings
-/// steeper than about 15° have a normal speed above it and are unaffected.
-pub const CRATER_FADE_NORMAL_SPEED_MPS: f64 = 6.0;
 /// Normal speed above which Penner's restitution is constant (m/s).
 const RESTITUTION_KNEE_MPS: f64 = 20.0;
 

@@ -19,7 +19,6 @@
 //! `v₀ = 1.83 m/s` (Holmes 1986; Penner 2002, "The physics of putting") and it rolls the
 //! stimp reading S, so `S = ln(1 + c v₀²)/(2·(5/7)ρ₀g·c)`.
 
-use super::bounce::CRATER_FADE_NORMAL_SPEED_MPS;
 use crate::error::{Error, Field, Reason, Result};
 use crate::real::{Real, lit};
 use crate::validate::{in_range, positive};
@@ -28,6 +27,13 @@ use crate::validate::{in_range, positive};
 pub const STIMPMETER_SPEED_MPS: f64 = 1.83;
 /// One foot (m): stimp readings are quoted in feet.
 pub use crate::units::M_PER_FOOT as FOOT_M;
+
+/// Normal speed below which the crater tilt fades out linearly (m/s). Issue 12 took
+/// Penner's reference impact's, 18.6 m/s · cos 44.4° = 13.29 m/s; 6 m/s matches
+/// TrackMan's roll after shallow landings (a 15° landing at 27 m/s rolls 40 yd; the
+/// issue-21 band figures and topped drives; the sweep is in docs/ground.md). Landings
+/// steeper than about 15° have a normal speed above it and are unaffected.
+pub const CRATER_FADE_NORMAL_SPEED_MPS: f64 = 6.0;
 /// Default green speed: stimp 10 ft (a fast club green; tour greens run 11–13).
 pub const DEFAULT_STIMP_M: f64 = 10.0 * FOOT_M;
 /// Accepted stimp readings (m): 1 ft to 30 ft.
