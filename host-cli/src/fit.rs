@@ -14,7 +14,8 @@ pub struct FitCmd {
     #[arg(long, value_name = "FILE.csv")]
     pub input: PathBuf,
     /// More measured shots, fitted jointly with --input (repeatable; the same columns
-    /// rules, each file its own header; not with `--family compliant`).
+    /// rules, each file its own header). With `--family compliant`: more delivery tables, a
+    /// driver chart (no `club` column) or single-drive TrackMan exports (issue 34).
     #[arg(long = "also", value_name = "FILE.csv")]
     pub also: Vec<PathBuf>,
     /// Model family to fit: `modern` (drag crisis, a lift of two saturating components,
@@ -73,7 +74,9 @@ _c _f _pa _pct) overrides --units, so TrackMan exports read as they are:
   carry fit --input ../shared/data/trackman_tour_2023.csv --temperature 21.1 --humidity 50 \
 --pressure 101325 --output tour.toml
 A single-drive TrackMan export (header `Ball,Club Speed,...,Carry Flat - Length,...` and a units line, as ../shared/data/trackman_amateur_drives.csv) is recognised by its header, as --input or --also: its premium-ball indoor rows are fitted on carry, apex, landing angle and flight time (rows the default model misses by > 15 % left out, and listed), and cross-validated by session (blocks of 1,000 consecutive rows held out together; table rows one by one):
-  carry fit --input ../shared/data/trackman_tour_2023.csv --also ../shared/data/trackman_driver_optimizer_2010.csv --also ../shared/data/trackman_amateur_drives.csv --table-weight 20 --temperature 21.1 --humidity 50 --pressure 101325 --output drives.toml";
+  carry fit --input ../shared/data/trackman_tour_2023.csv --also ../shared/data/trackman_driver_optimizer_2010.csv --also ../shared/data/trackman_amateur_drives.csv --table-weight 20 --temperature 21.1 --humidity 50 --pressure 101325 --output drives.toml
+The contact law (--family compliant) fits delivery → launch rows (club_delivery.csv's columns); with --also, more tables, a driver chart (no club column: TrackMan's 2010 optimizer, struck by the driver preset) and single-drive exports, jointly (the drives 1/--table-weight times the tables in total, k_e within Penner's measured 0.0020-0.0040 s/m, drives held out by session):
+  carry fit --family compliant --input ../shared/data/club_delivery.csv --also ../shared/data/trackman_driver_optimizer_2010.csv --also ../shared/data/trackman_amateur_drives.csv --output contact.toml";
 
 impl FitCmd {
     /// The typed request of these options.

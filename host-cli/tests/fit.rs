@@ -232,8 +232,9 @@ fn bad_input_is_one_line_and_status_two() {
 }
 
 /// `--also` joins more inputs: the tour table and the 2010 chart fitted jointly reproduce
-/// `tour2023` (`--evaluate tour2023` on the same rows gives the same errors),
-/// and the compliant family, which reads one file, refuses it with status 2.
+/// `tour2023` (`--evaluate tour2023` on the same rows gives the same errors); the compliant
+/// family reads only delivery tables, so the tour table as its input is refused with
+/// status 2, naming the input.
 #[test]
 fn joins_inputs_with_also() {
     let Some(data) = tour_data() else {
@@ -301,5 +302,113 @@ fn joins_inputs_with_also() {
         &chart,
     ]);
     assert_eq!(code, 2, "{err}");
-    assert!(err.contains("also"), "{err}");
+    assert!(err.starts_with("carry: --input"), "{err}");
+    assert_eq!(err.trim().lines().count(), 1, "{err}");
+}
+
+/// The first `n` drives of the shared single-drive export (header, units line, rows),
+/// written to a scratch file for one test: read from `../shared` at test time, never kept
+/// in the project (the file is removed when the returned guard drops). `None` when
+/// `../shared` is absent.
+fn drives_sample(n: usize) -> Option<Removed> {
+    let data = tour_data()?.replace("trackman_tour_2023.csv", "trackman_amateur_drives.csv");
+    let text = std::fs::read_to_string(&data).ok()?;
+    let sample: Vec<&str> = text.lines().take(2 + n).collect();
+    Some(Removed(temp_file(
+        "drives-sample.csv",
+        &(sample.join("\n") + "\n"),
+    )))
+}
+
+/// A scratch file removed when dropped.
+struct Removed(PathBuf);
+
+impl Drop for Removed {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_file(&self.0);
+    }
+}
+
+/// Issue 34, item 2: `carry fit --family compliant` fits the contact on delivery tables, a
+/// driver chart (no `club` column) and single drives together: every row is read (the
+/// drives with a full delivery and launch), the drives weigh `1/--table-weight` times the
+/// tables in total, k_e stays in Penner's measured range, and a bad table weight is one
+/// line naming `--table-weight` with status 2.
+#[test]
+fn compliant_family_fits_tables_and_single_drives_together() {
+    let Some(delivery) =
+        tour_data().map(|d| d.replace("trackman_tour_2023.csv", "club_delivery.csv"))
+    else {
+        return; // ../shared absent
+    };
+    let chart = delivery.replace("club_delivery.csv", "trackman_driver_optimizer_2010.csv");
+    let Some(sample) = drives_sample(40) else {
+        return;
+    };
+    let drives = sample.0.display().to_string();
+    // tables alone: club_delivery.csv's 11 rows and the chart's 30 driver rows
+    let t = json(&[
+        "fit",
+        "--family",
+        "compliant",
+        "--input",
+        &delivery,
+        "--also",
+        &chart,
+        "--json",
+        "--no-cross-validation",
+    ]);
+    assert_eq!(t["rows"], 41, "{t}");
+    assert_eq!(
+        t["fit"]["rows"][40]["label"],
+        "trackman_driver_optimizer_2010"
+    );
+    let j = json(&[
+        "fit",
+        "--family",
+        "compliant",
+        "--input",
+        &delivery,
+        "--also",
+        &chart,
+        "--also",
+        &drives,
+        "--json",
+        "--no-cross-validation",
+        "--table-weight",
+        "2",
+    ]);
+    let n = j["drives"]["rows"].as_u64().unwrap_or(0);
+    assert!(n > 20 && n <= 40, "{j}");
+    assert_eq!(j["tables"]["rows"], 41);
+    assert_eq!(j["rows"].as_u64(), Some(n + 41));
+    let weight = j["drives"]["weight_each"].as_f64().unwrap_or(f64::NAN);
+    #[allow(clippy::cast_precision_loss)]
+    let expected = 41.0 / n as f64 / 2.0;
+    assert!((weight - expected).abs() < 1e-12, "{weight} {expected}");
+    let k_e = j["coefficients"]["restitution_speed_slope_spm"]
+        .as_f64()
+        .unwrap_or(f64::NAN);
+    assert!((0.002..=0.004).contains(&k_e), "{k_e}");
+    assert!(
+        j["drives"]["summary"][2]["mean_abs_pct"]
+            .as_f64()
+            .is_some_and(f64::is_finite)
+    );
+    let Run {
+        code, stderr: err, ..
+    } = run(&[
+        "fit",
+        "--family",
+        "compliant",
+        "--input",
+        &delivery,
+        "--also",
+        &drives,
+        "--table-weight",
+        "0",
+    ]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.starts_with("carry: --table-weight"), "{err}");
+    assert_eq!(err.trim().lines().count(), 1, "{err}");
 }

@@ -212,6 +212,15 @@ pub fn read(path: &Path) -> Result<Vec<Drive>, String> {
     parse(&text)
 }
 
+/// Whether `text` is a single-drive TrackMan export: its header starts `Ball,` and names
+/// `Carry Flat - Length` (the format of `../shared/data/trackman_amateur_drives.csv`).
+#[must_use]
+pub fn is_export(text: &str) -> bool {
+    text.lines()
+        .next()
+        .is_some_and(|h| h.starts_with("Ball,") && h.contains("Carry Flat - Length"))
+}
+
 /// Reads the drives from the shared file ([`default_path`]).
 ///
 /// # Errors

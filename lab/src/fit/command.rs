@@ -14,7 +14,8 @@ pub struct FitRequest {
     /// Measured shots (CSV; `-` for standard input). The columns: this module's doc.
     pub input: PathBuf,
     /// More measured shots, fitted jointly with --input (repeatable; the same columns
-    /// rules, each file its own header; not with `--family compliant`).
+    /// rules, each file its own header). With `--family compliant`: more delivery tables, a
+    /// driver chart (no `club` column) or single-drive TrackMan exports (issue 34).
     pub also: Vec<PathBuf>,
     /// Model family to fit: `modern` (drag crisis, a lift of two saturating components,
     /// Smits & Smith spin decay; 9 coefficients) or `quintavalla` (the seed's linear family, 5 coefficients);

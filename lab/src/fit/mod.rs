@@ -11,6 +11,7 @@ mod bounded;
 pub mod command;
 pub mod flight;
 pub mod impact;
+pub mod joint_contact;
 mod problem;
 mod report;
 pub mod request;

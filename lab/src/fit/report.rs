@@ -113,6 +113,34 @@ impl Fit {
         self.summary.get(i)
     }
 
+    /// The summaries of the rows `keep` selects, per quantity: fitted, and held out when
+    /// the fit was cross-validated.
+    #[must_use]
+    pub fn summaries_of_rows(
+        &self,
+        keep: impl Fn(&RowResult) -> bool,
+    ) -> (Vec<QuantitySummary>, Option<Vec<QuantitySummary>>) {
+        let rows: Vec<&RowResult> = self.rows.iter().filter(|r| keep(r)).collect();
+        let of = |i: usize, loo: bool| {
+            QuantitySummary::of(rows.iter().filter_map(|r| {
+                let obs = r.observed.get(i).copied().flatten()?;
+                let pred = if loo {
+                    r.loo_predicted.as_ref()?.get(i).copied()?
+                } else {
+                    r.predicted.get(i).copied()?
+                };
+                Some((pred, obs))
+            }))
+        };
+        let n = self.quantities.len();
+        (
+            (0..n).map(|i| of(i, false)).collect(),
+            self.loo_summary
+                .as_ref()
+                .map(|_| (0..n).map(|i| of(i, true)).collect()),
+        )
+    }
+
     /// The leave-one-out summary of quantity `name`.
     #[must_use]
     pub fn loo_summary_of(&self, name: &str) -> Option<&QuantitySummary> {

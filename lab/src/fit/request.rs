@@ -320,11 +320,7 @@ fn is_drives_file(input: &PathBuf) -> bool {
     if input.as_os_str() == "-" {
         return false;
     }
-    std::fs::read_to_string(input).is_ok_and(|t| {
-        t.lines()
-            .next()
-            .is_some_and(|h| h.starts_with("Ball,") && h.contains("Carry Flat - Length"))
-    })
+    std::fs::read_to_string(input).is_ok_and(|t| crate::drives::is_export(&t))
 }
 
 /// The rows of a fit input: a single-drive export ([`read_drives`]) or a table
@@ -445,13 +441,6 @@ pub fn document(cmd: &FitRequest) -> Result<serde_json::Value, Failure> {
 
 fn produce(cmd: &FitRequest, value: bool) -> Result<Produced, Failure> {
     if cmd.family == super::request_contact::FAMILY {
-        if !cmd.also.is_empty() {
-            return Err(InputError::new(
-                "also",
-                "the compliant family reads one --input file".to_string(),
-            )
-            .into());
-        }
         return super::request_contact::produce(cmd, value);
     }
     let evaluate = match &cmd.evaluate {
