@@ -294,8 +294,9 @@ def _column_text(values: _np.ndarray) -> list:
     return out
 
 
-def _table(data: _Any) -> _Dict[str, _np.ndarray]:
-    """Columns of a DataFrame, a mapping of arrays or a structured array."""
+def _table(data: _Any, name: str = "data") -> _Dict[str, _np.ndarray]:
+    """Columns of a DataFrame, a mapping of arrays or a structured array (``name``: the
+    argument, for the error)."""
     if isinstance(data, _np.ndarray) and data.dtype.names:
         return {n: _np.asarray(data[n]) for n in data.dtype.names}
     if hasattr(data, "columns") and hasattr(data, "__getitem__"):  # pandas DataFrame
@@ -303,7 +304,7 @@ def _table(data: _Any) -> _Dict[str, _np.ndarray]:
     if isinstance(data, _Mapping):
         return {str(k): _np.atleast_1d(_np.asarray(v)) for k, v in data.items()}
     raise ValueError(
-        f"data: expected a DataFrame, a dict of arrays, a structured array or a CSV path, "
+        f"{name}: expected a DataFrame, a dict of arrays, a structured array or a CSV path, "
         f"got {type(data).__name__}"
     )
 
@@ -321,6 +322,8 @@ def fit(
     humidity: "float | None" = None,
     pressure: "float | None" = None,
     altitude: "float | None" = None,
+    also: _Any = (),
+    table_weight: "float | None" = None,
 ) -> _Dict[str, _Any]:
     """Fit a model family to measured shots, as ``carry fit --json``.
 
@@ -330,6 +333,9 @@ def fit(
     ``_yd`` overrides ``units``). ``family``: ``modern``, ``quintavalla`` or ``compliant``
     (the contact law, on ``club_delivery.csv``'s columns). The conditions apply to rows
     without their own. ``output`` writes the fitted model (TOML, for ``aero=``/``contact=``).
+    ``also``: more data fitted jointly (``carry fit --also``), each a path or a table as
+    ``data``; a single-drive TrackMan export among them (a path, recognised by its header)
+    weighs ``1/table_weight`` times the tables (``--table-weight``, default 1).
 
     Returns the JSON document: ``family``, ``rows``, ``ignored_columns``,
     ``coefficients`` (name → value) and ``fit`` (``parameters``, ``quantities``, per-row
@@ -355,19 +361,28 @@ def fit(
         pressure=pressure,
         altitude=altitude,
     )
-    if isinstance(data, (str, _os.PathLike)):
-        return _carry.fit_csv(_os.fspath(data), **opts)
-    table = _table(data)
-    lengths = {len(v) for v in table.values()}
-    if len(lengths) > 1:
-        raise ValueError("data: columns differ in length")
+    if table_weight is not None:
+        _number_text("table_weight", table_weight)
+        opts["table_weight"] = table_weight
+    if isinstance(also, (str, _os.PathLike)) or not isinstance(also, (list, tuple)):
+        also = [also]
     with _tempfile.TemporaryDirectory() as tmp:
-        path = _os.path.join(tmp, "shots.csv")
-        with open(path, "w", newline="") as f:
-            w = _csv.writer(f)
-            w.writerow(list(table))
-            w.writerows(zip(*(_column_text(v) for v in table.values())))
-        return _carry.fit_csv(path, **opts)
+
+        def as_path(name: str, value: _Any) -> str:
+            if isinstance(value, (str, _os.PathLike)):
+                return _os.fspath(value)
+            table = _table(value, name)
+            if len({len(v) for v in table.values()}) > 1:
+                raise ValueError(f"{name}: columns differ in length")
+            path = _os.path.join(tmp, f"{len(_os.listdir(tmp))}.csv")
+            with open(path, "w", newline="") as f:
+                w = _csv.writer(f)
+                w.writerow(list(table))
+                w.writerows(zip(*(_column_text(v) for v in table.values())))
+            return path
+
+        opts["also"] = [as_path(f"also[{i}]", a) for i, a in enumerate(also)]
+        return _carry.fit_csv(as_path("data", data), **opts)
 
 
 def _option_value(name: str, value: _Any) -> str:

@@ -231,8 +231,12 @@ def fit(
     humidity: float | None = None,
     pressure: float | None = None,
     altitude: float | None = None,
+    also: Any = (),
+    table_weight: float | None = None,
 ) -> Dict[str, Any]:
-    """``carry fit --json`` on a DataFrame, dict of arrays, structured array or CSV path."""
+    """``carry fit --json`` on a DataFrame, dict of arrays, structured array or CSV path;
+    ``also``: more data fitted jointly (paths or tables), ``table_weight`` as
+    ``--table-weight``."""
 
 def optimize(**kwargs: Any) -> Dict[str, Any]:
     """``carry optimize --json`` with ``kwargs`` as its options (snake_case)."""

@@ -12,6 +12,10 @@ use std::path::PathBuf;
 pub struct FitArgs {
     /// The CSV file of measured shots.
     pub input: PathBuf,
+    /// More files fitted jointly (`carry fit --also`).
+    pub also: Vec<PathBuf>,
+    /// Weight of every table row when single drives are in the fit (`--table-weight`).
+    pub table_weight: Option<f64>,
     /// Model family (`modern`, `quintavalla`, `compliant`).
     pub family: String,
     /// Evaluate this model instead of fitting.
@@ -54,7 +58,7 @@ pub fn run(args: &FitArgs) -> Result<serde_json::Value, FitError> {
     };
     let request = FitRequest {
         input: args.input.clone(),
-        also: Vec::new(),
+        also: args.also.clone(),
         family: args.family.clone(),
         output: args.output.clone(),
         evaluate: args.evaluate.clone(),
@@ -67,7 +71,7 @@ pub fn run(args: &FitArgs) -> Result<serde_json::Value, FitError> {
         humidity: args.humidity,
         pressure: args.pressure,
         altitude: args.altitude,
-        table_weight: None,
+        table_weight: args.table_weight,
     };
     document(&request).map_err(|e| match e {
         Failure::Input(e) => FitError::Input(e.as_column()),

@@ -128,7 +128,7 @@ fn to_py<'py>(py: Python<'py>, v: &serde_json::Value) -> PyResult<Bound<'py, PyA
 #[pyfunction]
 #[pyo3(signature = (input, family, evaluate=None, output=None, cross_validation=true,
     units=None, air_density=None, temperature=None, humidity=None, pressure=None,
-    altitude=None))]
+    altitude=None, also=Vec::new(), table_weight=None))]
 #[allow(clippy::too_many_arguments)]
 fn fit_csv(
     py: Python<'_>,
@@ -143,9 +143,13 @@ fn fit_csv(
     humidity: Option<f64>,
     pressure: Option<f64>,
     altitude: Option<f64>,
+    also: Vec<PathBuf>,
+    table_weight: Option<f64>,
 ) -> PyResult<Py<PyAny>> {
     let a = fit::FitArgs {
         input,
+        also,
+        table_weight,
         family,
         evaluate,
         output,

@@ -61,3 +61,27 @@ def test_fit_bad_arguments_raise_value_error(trackman):
         carry.fit({"ball_speed": [70.0]})
     with pytest.raises(ValueError, match="data"):
         carry.fit(42)
+
+
+def test_fit_also_joins_tables_and_checks_the_table_weight(cli, shared_data):
+    """`also` is `carry fit --also`: the compliant family on club_delivery.csv plus the 2010
+    driver chart (a path and a DataFrame give the same fit, equal to the CLI's), and a bad
+    `table_weight` or `also` item is a ValueError naming it."""
+    pd = pytest.importorskip("pandas")
+    delivery = shared_data / "club_delivery.csv"
+    chart = shared_data / "trackman_driver_optimizer_2010.csv"
+    kw = dict(family="compliant", cross_validation=False)
+    from_path = carry.fit(str(delivery), also=[chart], **kw)
+    from_frame = carry.fit(str(delivery), also=pd.read_csv(chart), **kw)
+    assert from_path["rows"] == 41
+    assert from_frame["rows"] == 41
+    assert from_frame["coefficients"] == pytest.approx(from_path["coefficients"], rel=1e-12)
+    args = [cli, "fit", "--json", "--no-progress", "--family", "compliant", "--input", str(delivery)]
+    out = subprocess.run(args + ["--also", str(chart), "--no-cross-validation"], check=True, capture_output=True, text=True)
+    expected = json.loads(out.stdout)
+    for k, v in expected["coefficients"].items():
+        assert from_path["coefficients"][k] == pytest.approx(v, rel=1e-12), k
+    with pytest.raises(ValueError, match="table_weight"):
+        carry.fit(str(delivery), also=[chart], table_weight="heavy", **kw)
+    with pytest.raises(ValueError, match=r"also\[0\]"):
+        carry.fit(str(delivery), also=[42], **kw)
