@@ -329,12 +329,7 @@ pub fn batch(args: &crate::args::BatchArgs, cmd: &EstimateCmd) -> Result<(), Fai
     };
     let inputs: Vec<_> = records.iter().map(row).collect();
     let results = carry_lab::request::estimate_rows(&inputs, &numerics, args.threads)?;
-    let label_of = |rec: &csv::ByteRecord| {
-        cols.label
-            .and_then(|i| launch_idx.get(i))
-            .and_then(|&i| rec.get(i))
-            .map(|l| String::from_utf8_lossy(l).into_owned())
-    };
+    let label_of = output::label_column(cols.label, &launch_idx);
     let out = output::batch_table(
         &records,
         &results,

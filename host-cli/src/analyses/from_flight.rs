@@ -510,12 +510,7 @@ pub fn batch(
     };
     let inputs: Vec<_> = records.iter().map(row).collect();
     let results = lf::fit_rows(&inputs, &n, args.threads)?;
-    let label_of = |rec: &csv::ByteRecord| {
-        cols.label
-            .and_then(|i| rest_idx.get(i))
-            .and_then(|&i| rec.get(i))
-            .map(|l| String::from_utf8_lossy(l).into_owned())
-    };
+    let label_of = output::label_column(cols.label, &rest_idx);
     let out = output::batch_table(
         &records,
         &results,

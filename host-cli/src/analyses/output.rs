@@ -102,6 +102,20 @@ pub(crate) fn csv_text(text: &str) -> String {
     }
 }
 
+/// The label of a record: column `label` of the columns the input's header kept
+/// (`kept[label]` is its index in the record), as text.
+pub(crate) fn label_column(
+    label: Option<usize>,
+    kept: &[usize],
+) -> impl Fn(&csv::ByteRecord) -> Option<String> + '_ {
+    move |rec| {
+        label
+            .and_then(|i| kept.get(i))
+            .and_then(|&i| rec.get(i))
+            .map(|l| String::from_utf8_lossy(l).into_owned())
+    }
+}
+
 /// The table of a batch analysis (`carry batch estimate`, from ball data or from the
 /// flight): one row per input record, `line` (the record's line in the input), `label`
 /// when the input has one (`has_label`, each row's from `label`), the record's `columns` and `error`; as CSV with a header, or

@@ -96,12 +96,7 @@ pub(super) fn produce(cmd: &FitRequest, value: bool) -> Result<Produced, Failure
             .map_err(|e| Failure::Other(format!("cannot write {}: {e}", path.display())))?;
     }
     let text = if cmd.json {
-        let coefficients: serde_json::Map<String, serde_json::Value> = PARAMETERS
-            .iter()
-            .zip(result.values())
-            .map(|(k, v)| ((*k).to_string(), serde_json::json!(v)))
-            .chain([("friction".to_string(), serde_json::json!(problem.friction))])
-            .collect();
+        let coefficients = coefficients(&result, problem.friction);
         let doc = serde_json::json!({
             "family": FAMILY,
             "rows": rows.len(),
@@ -241,12 +236,7 @@ fn produce_joint(
             .map_err(|e| Failure::Other(format!("cannot write {}: {e}", path.display())))?;
     }
     if cmd.json {
-        let coefficients: serde_json::Map<String, serde_json::Value> = PARAMETERS
-            .iter()
-            .zip(result.values())
-            .map(|(k, v)| ((*k).to_string(), serde_json::json!(v)))
-            .chain([("friction".to_string(), serde_json::json!(problem.friction))])
-            .collect();
+        let coefficients = coefficients(&result, problem.friction);
         let doc = serde_json::json!({
             "family": FAMILY,
             "rows": rows.len(),
@@ -339,6 +329,17 @@ fn errors(
         };
         let _ = writeln!(s, "  {name:<16} {mean:>10}   {max:>10}     {l}");
     }
+}
+
+/// The fitted law's parameters by name, with the friction it held (the JSON document's
+/// `coefficients`).
+fn coefficients(result: &Fit, friction: f64) -> serde_json::Map<String, serde_json::Value> {
+    PARAMETERS
+        .iter()
+        .zip(result.values())
+        .map(|(k, v)| ((*k).to_string(), serde_json::json!(v)))
+        .chain([("friction".to_string(), serde_json::json!(friction))])
+        .collect()
 }
 
 /// The readable report (ball speed in mph, angles in degrees, spin in rpm).
