@@ -176,7 +176,6 @@ impl ImpactInput {
             cg_to_face_m: v3(self.cg_to_face_m),
             restitution: lit(self.cor),
             contact: ContactLaw::Rolling,
-            spin_axis_share: T::one(),
         }
     }
 
