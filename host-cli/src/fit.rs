@@ -63,6 +63,11 @@ pub struct FitCmd {
     /// fit used 20 against ~3,700 drives).
     #[arg(long, value_name = "W")]
     pub table_weight: Option<f64>,
+    /// Replace a parameter's bounds: `INDEX:LO:HI` or `NAME:LO:HI` (repeatable; INDEX in
+    /// the family's order from 0, e.g. `8:0.01:0.4` for the modern `cl_low_saturation_spin`,
+    /// the bound single drives in the fit already get). The start is moved into them.
+    #[arg(long, value_name = "INDEX:LO:HI")]
+    pub bound: Vec<String>,
 }
 
 /// Help text after the options.
@@ -98,6 +103,7 @@ impl FitCmd {
             pressure: self.pressure,
             altitude: self.altitude,
             table_weight: self.table_weight,
+            bound: self.bound.clone(),
         }
     }
 }

@@ -186,7 +186,23 @@ fn bad_input_is_one_line_and_status_two() {
     let no_carry = temp_file("nocarry.csv", "ball_speed,launch_angle,spin\n70,12,2500\n");
     let bad_model = temp_file("bad.toml", "family = \"modern\"\ncl_max = -1\n");
     let unknown_key = temp_file("unknown.toml", "family = \"modern\"\ncl_maximum = 0.3\n");
-    let cases: [(Vec<&str>, &str); 6] = [
+    let good = temp_file(
+        "good.csv",
+        "ball_speed,launch_angle,spin,carry\n70,12,2500,230\n",
+    );
+    let row = good.to_str().unwrap_or("");
+    let bound = |b: &'static str| vec!["fit", "--input", row, "--bound", b];
+    let cases: [(Vec<&str>, &str); 10] = [
+        (
+            bound("9:0.01:0.4"),
+            "--bound: '9:0.01:0.4': no parameter '9'",
+        ),
+        (bound("cd_low:0.1:0.2"), "no parameter 'cd_low'"),
+        (
+            bound("8:0.4:0.01"),
+            "the lower bound must be below the upper",
+        ),
+        (bound("8:0.01"), "expected INDEX:LO:HI"),
         (
             vec!["fit", "--input", bad_row.to_str().unwrap_or("")],
             "line 3: launch_angle: 'twelve' is not a number",
@@ -411,4 +427,46 @@ fn compliant_family_fits_tables_and_single_drives_together() {
     assert_eq!(code, 2, "{err}");
     assert!(err.starts_with("carry: --table-weight"), "{err}");
     assert_eq!(err.trim().lines().count(), 1, "{err}");
+}
+
+/// `--bound` replaces a parameter's bounds (by index or name) and the fit stays in them:
+/// the seed's own shots give back the seed's `cd0` = 0.171 within the family's bounds, and
+/// stop on a bound of 0.2–0.3 (the start moved into it).
+#[test]
+fn bound_replaces_a_parameters_bounds() {
+    let input = seed_shots();
+    let fit = |extra: &[&str]| {
+        let mut args = vec![
+            "fit",
+            "--input",
+            input.to_str().unwrap_or(""),
+            "--units",
+            "imperial",
+            "--family",
+            "quintavalla",
+            "--no-cross-validation",
+            "--json",
+        ];
+        args.extend(extra);
+        json(&args)["fit"]["parameters"][0].clone()
+    };
+    let free = fit(&[]);
+    assert!(
+        free["value"]
+            .as_f64()
+            .is_some_and(|v| (v - 0.171).abs() < 1e-3),
+        "{free}"
+    );
+    for which in ["0:0.2:0.3", "cd0:0.2:0.3"] {
+        let p = fit(&["--bound", which]);
+        assert_eq!(p["lower"], 0.2, "{p}");
+        assert_eq!(p["upper"], 0.3, "{p}");
+        assert!(
+            p["value"]
+                .as_f64()
+                .is_some_and(|v| (0.2..0.2 + 1e-3).contains(&v)),
+            "{p}"
+        );
+        assert!(p["initial"].as_f64().is_some_and(|v| v >= 0.2), "{p}");
+    }
 }

@@ -12,6 +12,11 @@
 //! # the drives' carry σ (relative; default 1.5 %): --carry-sigma=0.01
 //! # the same fit on every session (the default's coefficients): add --full (--folds=none:
 //! # no cross-validation)
+//! # leave-one-out over the 53 table rows with the drives in the fit (the default's
+//! # objective: --sigma-data --carry-sigma=0.01 --spin-sigma=0.03): each row held out in
+//! # turn, the refit linearised at the default (one Gauss–Newton step, warm start), the row
+//! # flown with the refit; --solve=I,J also refits rows I, J (0-based) in full (~1 min each):
+//! cargo run --release -p carry-lab --example spin_shape -- loo --sigma-data --carry-sigma=0.01 --spin-sigma=0.03
 //! ```
 
 use carry_core::Scene;
@@ -26,14 +31,15 @@ use carry_lab::fit::single_shots::{
     CarryErrors, DriveRow, SPEED_BANDS_MPH, SPIN_BANDS_RPM, by_band, carries, drive_rows,
     premium_indoors, screened, standard_air,
 };
-use carry_lab::fit::solve;
 use carry_lab::fit::spin_target::{
     INVERSE_SIGMA, SpinRow, SpinTargetProblem, gain_of, jacobian, spin_gain,
 };
+use carry_lab::fit::{residuals, solve};
 use carry_lab::launch_drives::{
     ALL, DRIVES_2026_WITHOUT_SESSION, Noise, Shot, SpinError, SpinSummary, held_out_model,
     noise_from_residuals, summary_residuals,
 };
+use nalgebra034::{DMatrix, DVector};
 use rayon::prelude::*;
 use std::collections::HashMap;
 use std::path::PathBuf;
@@ -460,6 +466,181 @@ fn cv(all: &[DriveRow], shots: &[Shot], o: &Options) {
     spin_table(&spin, &sessions);
 }
 
+/// A held-out table row: carry error (%) of the default, of the in-sample step, held out;
+/// the held-out parameters.
+type Held = (f64, f64, f64, Vec<f64>);
+
+/// Each row's own residual vector at `p` (the fit's weighted, scaled residuals).
+fn row_residuals(problem: &SpinTargetProblem, rows: &[SpinRow], p: &[f64]) -> Vec<Vec<f64>> {
+    rows.par_iter()
+        .map(|r| residuals(problem, std::slice::from_ref(r), p).expect("a residual"))
+        .collect()
+}
+
+/// Leave-one-out over the table rows with the drives in the fit (issue 35). The default is
+/// the full fit's optimum; without row `t` the refit is linearised there: with `J`, `r` the
+/// Jacobian (central differences, free parameters only: those on a bound stay on it) and
+/// residuals of every row, `H = Σ JᵢᵀJᵢ`, `g = Σ Jᵢᵀrᵢ`, the refit moves by
+/// `Δ_t = −(H − J_tᵀJ_t)⁻¹(g − J_tᵀr_t)` (the first Gauss–Newton step of a refit started
+/// at the default), and row `t` is flown with `p + Δ_t`. In sample: `Δ₀ = −H⁻¹g`.
+#[allow(clippy::too_many_lines)]
+fn loo(all: &[DriveRow], shots: &[Shot], o: &Options, solve_rows: &[usize]) {
+    let tour = table("trackman_tour_2023.csv");
+    let chart = table("trackman_driver_optimizer_2010.csv");
+    let mut tables: Vec<ShotRow> = tour.iter().chain(&chart).cloned().collect();
+    for r in &mut tables {
+        r.weight = o.weight;
+    }
+    let premium = premium_indoors(all);
+    let reference = carries(
+        &AeroModel::tour_2023(),
+        &premium.iter().map(|r| r.row.clone()).collect::<Vec<_>>(),
+        &integrator(),
+    );
+    let premium = screened(&premium, &reference);
+    let by_index: HashMap<usize, &Shot> = shots.iter().map(|s| (s.index, s)).collect();
+    let model = AeroModel::drives_2026();
+    let p0 = AeroFamily::Modern.parameters(&model).unwrap_or_default();
+    let problem = problem_of(o, &p0);
+    let rows = training(&premium, &by_index, &tables, &model, None);
+    let first_table = rows.len() - tables.len();
+    let bounds = problem.inner.bounds.clone();
+    let free: Vec<usize> = (0..p0.len())
+        .filter(|&k| {
+            let (lo, hi) = bounds[k];
+            p0[k] - lo > 1e-6 * (hi - lo) && hi - p0[k] > 1e-6 * (hi - lo)
+        })
+        .collect();
+    println!(
+        "options: σ from data {} (carry {}), spin σ {}, table weight {}, bounds {:?}; {} drives, {} table rows; free parameters {:?}",
+        o.sigma_data,
+        o.carry_sigma,
+        o.spin_sigma,
+        o.weight,
+        o.bounds,
+        first_table,
+        tables.len(),
+        free
+    );
+    let t = std::time::Instant::now();
+    let r0 = row_residuals(&problem, &rows, &p0);
+    // Jacobian columns per row: central differences, step 1e-4 of the value.
+    let columns: Vec<Vec<Vec<f64>>> = free
+        .iter()
+        .map(|&k| {
+            let h = 1e-4 * p0[k].abs();
+            let mut plus = p0.clone();
+            plus[k] += h;
+            let mut minus = p0.clone();
+            minus[k] -= h;
+            let rp = row_residuals(&problem, &rows, &plus);
+            let rm = row_residuals(&problem, &rows, &minus);
+            rp.iter()
+                .zip(&rm)
+                .map(|(a, b)| a.iter().zip(b).map(|(x, y)| (x - y) / (2.0 * h)).collect())
+                .collect()
+        })
+        .collect();
+    let n = free.len();
+    let block = |i: usize| -> (DMatrix<f64>, DVector<f64>) {
+        let m = r0[i].len();
+        let j = DMatrix::from_fn(m, n, |a, b| columns[b][i][a]);
+        let r = DVector::from_column_slice(&r0[i]);
+        (j.transpose() * &j, j.transpose() * r)
+    };
+    let mut h_all = DMatrix::zeros(n, n);
+    let mut g_all = DVector::zeros(n);
+    for i in 0..rows.len() {
+        let (h, g) = block(i);
+        h_all += h;
+        g_all += g;
+    }
+    println!("Jacobian and sums: {:.0} s", t.elapsed().as_secs_f64());
+    let step = |h: &DMatrix<f64>, g: &DVector<f64>| -> Vec<f64> {
+        let d = h.clone().cholesky().expect("positive definite").solve(g);
+        let mut p = p0.clone();
+        for (a, &k) in free.iter().enumerate() {
+            p[k] -= d[a];
+        }
+        p
+    };
+    let p_in = step(&h_all, &g_all);
+    println!(
+        "in sample (one step from the default): {}",
+        coefficients(&p_in)
+    );
+    let carry_of = |p: &[f64], row: &ShotRow| {
+        carries(
+            &AeroFamily::Modern.model(p),
+            std::slice::from_ref(row),
+            &Integrator::dormand_prince(1e-11),
+        )[0]
+    };
+    let pct = |c: f64, row: &ShotRow| 100.0 * (c - row.carry_m) / row.carry_m;
+    let held: Vec<Held> = (0..tables.len())
+        .into_par_iter()
+        .map(|t| {
+            let (h, g) = block(first_table + t);
+            let p = step(&(&h_all - h), &(&g_all - g));
+            let row = &tables[t];
+            (
+                pct(carry_of(&p0, row), row),
+                pct(carry_of(&p_in, row), row),
+                pct(carry_of(&p, row), row),
+                p,
+            )
+        })
+        .collect();
+    println!("\n| row | carry m | default | in sample (step) | held out | held-out S_low | k_L |");
+    println!("|---|---:|---:|---:|---:|---:|---:|");
+    for (row, (d, i, l, p)) in tables.iter().zip(&held) {
+        println!(
+            "| {} | {:.1} | {d:+.2} % | {i:+.2} % | {l:+.2} % | {:.4} | {:.4} |",
+            row.label, row.carry_m, p[8], p[5]
+        );
+    }
+    for (name, range) in [
+        ("tour 2023", 0..tour.len()),
+        ("2010 chart", tour.len()..tables.len()),
+    ] {
+        #[allow(clippy::cast_precision_loss)]
+        let stats = |f: &dyn Fn(&Held) -> f64| {
+            let v: Vec<f64> = held[range.clone()].iter().map(|x| f(x).abs()).collect();
+            (
+                v.iter().sum::<f64>() / v.len() as f64,
+                v.iter().fold(0.0_f64, |m, x| m.max(*x)),
+            )
+        };
+        let (dm, dw) = stats(&|x| x.0);
+        let (im, iw) = stats(&|x| x.1);
+        let (lm, lw) = stats(&|x| x.2);
+        println!(
+            "{name}: default {dm:.2} % (worst {dw:.2} %), in sample {im:.2} % ({iw:.2} %), held out {lm:.2} % ({lw:.2} %)"
+        );
+    }
+    for &t in solve_rows {
+        let rest: Vec<SpinRow> = rows
+            .iter()
+            .enumerate()
+            .filter(|&(i, _)| i != first_table + t)
+            .map(|(_, r)| r.clone())
+            .collect();
+        let start = clamp_into(&p0, &bounds);
+        let s = std::time::Instant::now();
+        let solved = solve(&problem, &rest, &start).expect("the refit");
+        let row = &tables[t];
+        println!(
+            "full refit without {} ({:.0} s, {}): {} → held out {:+.2} % (one step: {:+.2} %)",
+            row.label,
+            s.elapsed().as_secs_f64(),
+            solved.termination,
+            coefficients(&solved.parameters),
+            pct(carry_of(&solved.parameters, row), row),
+            held[t].2
+        );
+    }
+}
+
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let drives = drives::read_shared().expect("the shared drives");
@@ -467,7 +648,7 @@ fn main() {
     let shots = shots_of(&drives);
     match args.first().map(String::as_str) {
         Some("diagnose") | None => diagnose(&all, &shots),
-        Some("cv") => {
+        Some(mode @ ("cv" | "loo")) => {
             let value = |k: &str| args.iter().find_map(|a| a.strip_prefix(k));
             let o = Options {
                 sigma_data: args.iter().any(|a| a == "--sigma-data"),
@@ -489,7 +670,14 @@ fn main() {
                     })
                     .collect(),
             };
-            cv(&all, &shots, &o);
+            if mode == "cv" {
+                cv(&all, &shots, &o);
+            } else {
+                let solve_rows: Vec<usize> = value("--solve=").map_or_else(Vec::new, |v| {
+                    v.split(',').filter_map(|x| x.parse().ok()).collect()
+                });
+                loo(&all, &shots, &o, &solve_rows);
+            }
         }
         Some(other) => panic!("unknown mode {other}"),
     }

@@ -72,6 +72,7 @@ pub fn run(args: &FitArgs) -> Result<serde_json::Value, FitError> {
         pressure: args.pressure,
         altitude: args.altitude,
         table_weight: args.table_weight,
+        bound: Vec::new(),
     };
     document(&request).map_err(|e| match e {
         Failure::Input(e) => FitError::Input(e.as_column()),

@@ -49,6 +49,11 @@ pub struct FitRequest {
     /// Weight of every row that is not a single drive (the tables), when single drives are
     /// in the fit (default 1; docs/aero.md, issue 35, uses 20).
     pub table_weight: Option<f64>,
+    /// Replaced parameter bounds, `INDEX:LO:HI` or `NAME:LO:HI` (repeatable; the index in
+    /// the family's parameter order, from 0; e.g. `8:0.01:0.4`, the modern family's
+    /// `cl_low_saturation_spin` as with single drives in the fit). The start is moved
+    /// into them.
+    pub bound: Vec<String>,
 }
 
 /// What a fit produces: text (the table, or the JSON document as text) or the JSON

@@ -441,6 +441,13 @@ pub fn document(cmd: &FitRequest) -> Result<serde_json::Value, Failure> {
 
 fn produce(cmd: &FitRequest, value: bool) -> Result<Produced, Failure> {
     if cmd.family == super::request_contact::FAMILY {
+        if !cmd.bound.is_empty() {
+            return Err(InputError::new(
+                "bound",
+                "the compliant family has no aerodynamic bounds".to_string(),
+            )
+            .into());
+        }
         return super::request_contact::produce(cmd, value);
     }
     let evaluate = match &cmd.evaluate {
@@ -497,6 +504,7 @@ fn produce(cmd: &FitRequest, value: bool) -> Result<Produced, Failure> {
             }
         }
     }
+    apply_bounds(&mut problem, &cmd.bound)?;
     let options = FitOptions {
         leave_one_out: !cmd.no_cross_validation,
     };
@@ -742,4 +750,51 @@ fn table(family: AeroFamily, f: &Fit, ignored: &[String], cmd: &FitRequest) -> S
         let _ = writeln!(s, "\nwrote {}", path.display());
     }
     s
+}
+
+/// Applies `--bound` options (`INDEX:LO:HI` or `NAME:LO:HI`) to `problem` and moves its
+/// start into the bounds (a millionth of the width inside, where the fit's bounded
+/// transform is finite).
+///
+/// # Errors
+/// An [`InputError`] on `bound`: not three fields, an unknown parameter, or not
+/// `LO < HI` (both finite).
+pub fn apply_bounds(problem: &mut AeroProblem, specs: &[String]) -> Result<(), InputError> {
+    let names = problem.family.parameter_names();
+    for spec in specs {
+        let bad = |why: String| InputError::new("bound", format!("'{spec}': {why}"));
+        let fields: Vec<&str> = spec.split(':').collect();
+        let [which, lo, hi] = fields[..] else {
+            return Err(bad("expected INDEX:LO:HI or NAME:LO:HI".into()));
+        };
+        let index = which
+            .parse::<usize>()
+            .ok()
+            .or_else(|| names.iter().position(|n| *n == which))
+            .filter(|&i| i < names.len())
+            .ok_or_else(|| {
+                bad(format!(
+                    "no parameter '{which}' (0–{} or {})",
+                    names.len() - 1,
+                    names.join(", ")
+                ))
+            })?;
+        let number = |x: &str| {
+            x.trim()
+                .parse::<f64>()
+                .ok()
+                .filter(|v| v.is_finite())
+                .ok_or_else(|| bad(format!("'{x}' is not a finite number")))
+        };
+        let (lo, hi) = (number(lo)?, number(hi)?);
+        if lo >= hi {
+            return Err(bad("the lower bound must be below the upper".into()));
+        }
+        problem.bounds[index] = (lo, hi);
+    }
+    for (x, &(lo, hi)) in problem.initial.iter_mut().zip(&problem.bounds) {
+        let margin = 1e-6 * (hi - lo);
+        *x = x.clamp(lo + margin, hi - margin);
+    }
+    Ok(())
 }
