@@ -426,7 +426,7 @@ fn main() {
     );
     println!("DRIVER_MODEL_ERROR ({n_me} rows; SI): {:?}", me.to_array());
     println!(
-        "DRIVER_SD_FACTOR (face, path, loft, attack, toe, height): {}",
+        "DRIVER_SD_SCALE (face, path, loft, attack, toe, height): {}",
         f6(&factor)
     );
     println!("{header}");
