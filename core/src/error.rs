@@ -151,6 +151,8 @@ pub enum Field {
     Iterations,
     /// A bound of the estimator's consistency check (tail probability or σ count).
     ConsistencyBound,
+    /// A posterior σ calibration factor of the estimator ([`crate::estimate::Settings::sd_scale`]).
+    PosteriorScale,
     // --- launch from the flight (launch_fit) ---
     /// A flight observation (a track point, a Doppler sample, a summary) or a measured
     /// launch value.
@@ -386,6 +388,7 @@ impl Field {
             Self::PriorSpread => "prior spread",
             Self::Iterations => "iteration budget",
             Self::ConsistencyBound => "consistency bound",
+            Self::PosteriorScale => "posterior σ scale",
             Self::Observation => "observation",
             Self::SpinAxis => "spin axis",
         }

@@ -1000,6 +1000,9 @@ typedef struct CarryEstimateInput_f32 {
   float check_tail_probability;
   // The consistency check's bound on a measured datum's miss, in σ (default 4).
   float check_max_shift_sd;
+  // The posterior σ calibration per unknown (finite, > 0; 1 = none): every reported 1σ
+  // is scaled by it (the driver's default: fitted on the TrackMan drives).
+  struct CarryDeliveryData_f32 sd_scale;
 } CarryEstimateInput_f32;
 
 // Estimate input in single precision.
@@ -1070,6 +1073,9 @@ typedef struct CarryEstimateInput_f64 {
   double check_tail_probability;
   // The consistency check's bound on a measured datum's miss, in σ (default 4).
   double check_max_shift_sd;
+  // The posterior σ calibration per unknown (finite, > 0; 1 = none): every reported 1σ
+  // is scaled by it (the driver's default: fitted on the TrackMan drives).
+  struct CarryDeliveryData_f64 sd_scale;
 } CarryEstimateInput_f64;
 
 // Estimate input in double precision.

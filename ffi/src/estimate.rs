@@ -140,6 +140,9 @@ pub struct CarryEstimateInput<T> {
     pub check_tail_probability: T,
     /// The consistency check's bound on a measured datum's miss, in σ (default 4).
     pub check_max_shift_sd: T,
+    /// The posterior σ calibration per unknown (finite, > 0; 1 = none): every reported 1σ
+    /// is scaled by it (the driver's default: fitted on the TrackMan drives).
+    pub sd_scale: CarryDeliveryData<T>,
 }
 
 /// The estimated delivery, or its 1σ (rad, m, m/s).
@@ -275,6 +278,7 @@ impl<T: Real> CarryEstimateInput<T> {
             posterior: CARRY_POSTERIOR_PROFILE,
             check_tail_probability: s.check.tail_probability,
             check_max_shift_sd: s.check.max_shift_sd,
+            sd_scale: from_core(&s.sd_scale),
         }
     }
 }
@@ -332,6 +336,7 @@ pub fn run<T: Real>(input: &CarryEstimateInput<T>) -> Result<CarryEstimateResult
             tail_probability: input.check_tail_probability,
             max_shift_sd: input.check_max_shift_sd,
         },
+        sd_scale: to_core(&input.sd_scale),
     };
     let e = estimate::estimate(
         &club,

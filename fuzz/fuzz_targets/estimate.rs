@@ -84,6 +84,10 @@ fn run<T: Real>(b: &mut Bytes<'_>) -> Result<()> {
         settings.check.tail_probability = lit(b.param(-0.1, 0.6));
         settings.check.max_shift_sd = lit(b.param(-1.0, 20.0));
     }
+    // read after the bounds, for the same reason: arbitrary posterior σ factors
+    if b.flag() {
+        settings.sd_scale = unknowns(b, &settings.sd_scale);
+    }
     let e = estimate(&club, &ball, &measured, &club_data, &settings)?;
     let c = e.consistency;
     assert!(

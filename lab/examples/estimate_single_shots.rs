@@ -9,23 +9,29 @@
 //! 1. **the prior** — mean and sd of face, path, dynamic loft, attack, club speed (the
 //!    rows' club data) and strike toe and height (the rows that carry it) — is fitted on
 //!    the training blocks;
-//! 2. **the σ calibration** — one factor `k` on the ball data's noise
-//!    ([`Noise::launch_monitor`]), standing for the impact model's own error — is chosen on
-//!    the training blocks: the `k` at which the median χ² of the most probable deliveries
-//!    equals its median under the model (reduced χ² = 1, on medians: heavy tails);
-//! 3. the held-out block is estimated with both and scored: mean |error| and the share of
-//!    rows within the reported 1σ, per output, and the share the consistency check flags.
+//! 2. **the impact model's error** per ball datum — the robust sd of the forward residual
+//!    `f(x_TrackMan) − y_TrackMan` over the training rows that carry the strike location —
+//!    is added to the launch monitor's noise in quadrature ([`Noise::with_model_error`]);
+//! 3. **the posterior σ calibration** per output — the 68.27th percentile of |error|/1σ of
+//!    every other training row estimated with 1 and 2 (temperature scaling) — is fitted;
+//! 4. the held-out block is estimated and scored: mean |error| and the share of rows
+//!    within the reported 1σ (without and with the factors of 3), per output (face, path,
+//!    loft, attack; toe and height where TrackMan has them), and the share the consistency
+//!    check flags.
 //!
 //! The last section fits on every block: the constants of `carry_core::estimate`
-//! (`DRIVER_PRIOR_*`, `DRIVER_NOISE_SCALE`). Re-run after any change of the impact model and
-//! paste them (docs/estimate.md §8 says how). The drives are read where they lie
-//! (`../shared/data/trackman_amateur_drives.csv`; `CARRY_DRIVES` overrides), never copied.
+//! (`DRIVER_PRIOR_*`, `DRIVER_MODEL_ERROR`, `DRIVER_SD_SCALE`). Re-run after any change of
+//! the impact model and paste them (docs/estimate.md §8.3 says how). The drives are read
+//! where they lie (`../shared/data/trackman_amateur_drives.csv`; `CARRY_DRIVES` overrides),
+//! never copied.
 //!
 //! ```sh
 //! cargo run --release -p carry-lab --example estimate_single_shots
 //! ```
 
-use carry_core::estimate::{BallData, ClubData, Noise, Prior, Settings, Unknowns, estimate};
+use carry_core::estimate::{
+    BallData, ClubData, Noise, Prior, Settings, Unknowns, estimate, predict,
+};
 use carry_core::{Ball, Preset};
 use carry_lab::drives::{self, Drive};
 use rayon::prelude::*;
@@ -37,6 +43,8 @@ struct Row {
     club_speed_mps: f64,
     /// face, path, dynamic loft, attack (deg).
     truth: [f64; 4],
+    /// TrackMan's strike location (toe, height; m), where it has it.
+    strike_m: Option<[f64; 2]>,
 }
 
 fn rows(all: &[Drive]) -> Vec<Row> {
@@ -55,6 +63,7 @@ fn rows(all: &[Drive]) -> Vec<Row> {
                 },
                 club_speed_mps: speed,
                 truth: [face, path, loft, attack],
+                strike_m: d.strike_m,
             })
         })
         .collect()
@@ -114,17 +123,53 @@ fn fit_prior(train: &[&Drive]) -> Prior<f64> {
     }
 }
 
-fn settings(prior: Prior<f64>, scale: f64) -> Settings<f64> {
+/// The impact model's own error on real drives, per ball datum: the robust sd (1.4826 ×
+/// MAD) of the forward residual `f(x_TrackMan) − y_TrackMan` — the ball data the model gives
+/// at TrackMan's club data and strike location minus TrackMan's ball data — over the rows of
+/// `rows` that carry the strike location (it contains TrackMan's own ball and club
+/// measurement noise too, which is small against it). With the number of rows used.
+fn model_error(rows: &[&Row]) -> (BallData<f64>, usize) {
+    let driver = Preset::find("driver").expect("driver");
+    let club = driver.spec::<f64>().validate().expect("driver");
+    let ball = Ball::standard();
+    let res: Vec<[f64; 5]> = rows
+        .par_iter()
+        .filter_map(|r| {
+            let [toe, height] = r.strike_m?;
+            let r2 = f64::to_radians;
+            let x = Unknowns {
+                face_angle_rad: r2(r.truth[0]),
+                club_path_rad: r2(r.truth[1]),
+                dynamic_loft_rad: r2(r.truth[2]),
+                attack_angle_rad: r2(r.truth[3]),
+                impact_toe_m: toe,
+                impact_height_m: height,
+                club_speed_mps: r.club_speed_mps,
+            };
+            let f = predict(&club, &ball, &x).ok()?.to_array();
+            let y = r.y.to_array();
+            Some(core::array::from_fn(|i| f[i] - y[i]))
+        })
+        .collect();
+    let sd = core::array::from_fn(|i| mean_sd(res.iter().map(|r| r[i])).1);
+    (BallData::from_array(sd), res.len())
+}
+
+fn settings(prior: Prior<f64>, model: &BallData<f64>) -> Settings<f64> {
     let driver = Preset::find("driver").expect("driver");
     let mut s = Settings::<f64>::typical(&driver.typical);
     s.prior = prior;
-    s.noise = Noise::launch_monitor().with_ball_scaled(scale);
+    s.noise = Noise::launch_monitor().with_model_error(model);
     s
 }
 
-/// Per row: the errors (model − TrackMan, deg) and 1σ of face, path, loft, attack, and
-/// whether the consistency check passed; `None` when the estimate failed.
-type Outcome = Option<([f64; 4], [f64; 4], bool, f64)>;
+/// The outputs scored: face, path, dynamic loft, attack (deg), strike toe and height (mm).
+const OUTPUTS: [&str; 6] = ["face", "path", "loft", "attack", "toe", "height"];
+
+/// Per row: the errors (model − TrackMan; deg, mm; NaN where TrackMan has no value) and 1σ
+/// of the [`OUTPUTS`], whether the consistency check passed, χ² over its median; `None`
+/// when the estimate failed.
+type Outcome = Option<([f64; 6], [f64; 6], bool, f64)>;
 
 fn run(rows: &[&Row], s: &Settings<f64>) -> Vec<Outcome> {
     let driver = Preset::find("driver").expect("driver");
@@ -144,14 +189,24 @@ fn run(rows: &[&Row], s: &Settings<f64>) -> Vec<Outcome> {
                 d(v.club_path_rad),
                 d(v.dynamic_loft_rad),
                 d(v.attack_angle_rad),
+                1e3 * v.impact_toe_m,
+                1e3 * v.impact_height_m,
             ];
             let sd = [
                 d(sd.face_angle_rad),
                 d(sd.club_path_rad),
                 d(sd.dynamic_loft_rad),
                 d(sd.attack_angle_rad),
+                1e3 * sd.impact_toe_m,
+                1e3 * sd.impact_height_m,
             ];
-            let err = core::array::from_fn(|i| value[i] - r.truth[i]);
+            let strike = r
+                .strike_m
+                .map_or([f64::NAN; 2], |s| [1e3 * s[0], 1e3 * s[1]]);
+            let truth = [
+                r.truth[0], r.truth[1], r.truth[2], r.truth[3], strike[0], strike[1],
+            ];
+            let err = core::array::from_fn(|i| value[i] - truth[i]);
             // χ² relative to its median for these degrees of freedom (Wilson–Hilferty)
             let dof = f64::from(e.consistency.dof);
             let median = dof * (1.0 - 2.0 / (9.0 * dof)).powi(3);
@@ -165,10 +220,11 @@ fn run(rows: &[&Row], s: &Settings<f64>) -> Vec<Outcome> {
         .collect()
 }
 
-/// Mean |error|, share within 1σ (per output), share flagged inconsistent, failures.
+/// Mean |error|, share within 1σ × `factor` (per output, over the rows where TrackMan has
+/// it), share flagged inconsistent, failures.
 struct Score {
-    mae: [f64; 4],
-    within: [f64; 4],
+    mae: [f64; 6],
+    within: [f64; 6],
     flagged: f64,
     /// The median of χ² over its median under the model (1: the noise is right).
     chi2_ratio: f64,
@@ -176,23 +232,32 @@ struct Score {
     n: usize,
 }
 
-fn score(out: &[Outcome]) -> Score {
+fn score(out: &[Outcome], factor: &[f64; 6]) -> Score {
     let ok: Vec<_> = out.iter().flatten().collect();
     let n = ok.len().max(1) as f64;
-    let mut mae = [0.0; 4];
-    let mut within = [0.0; 4];
+    let mut mae = [0.0; 6];
+    let mut within = [0.0; 6];
+    let mut count = [0.0_f64; 6];
     let mut flagged = 0.0;
     let chi2_ratio = median(ok.iter().map(|o| o.3).collect());
     for (err, sd, consistent, _) in &ok {
-        for i in 0..4 {
-            mae[i] += err[i].abs() / n;
-            if err[i].abs() <= sd[i] {
-                within[i] += 1.0 / n;
+        for i in 0..6 {
+            if err[i].is_nan() {
+                continue;
+            }
+            count[i] += 1.0;
+            mae[i] += err[i].abs();
+            if err[i].abs() <= factor[i] * sd[i] {
+                within[i] += 1.0;
             }
         }
         if !consistent {
             flagged += 1.0 / n;
         }
+    }
+    for i in 0..6 {
+        mae[i] /= count[i].max(1.0);
+        within[i] /= count[i].max(1.0);
     }
     Score {
         mae,
@@ -204,120 +269,143 @@ fn score(out: &[Outcome]) -> Score {
     }
 }
 
-/// The grid of the σ calibration.
-const SCALES: [f64; 9] = [1.0, 1.5, 2.0, 2.5, 3.0, 3.5, 4.0, 5.0, 6.0];
-
-/// The scale at which the median χ² of `rows` equals its median under the model (the
-/// "reduced χ² = 1" calibration, on the median because the misfits have heavy tails):
-/// log-linear interpolation between the grid's scales; with the table of every scale.
-fn calibrate(rows: &[&Row], prior: Prior<f64>) -> (f64, Vec<(f64, Score)>) {
-    let table: Vec<(f64, Score)> = SCALES
-        .iter()
-        .map(|&k| (k, score(&run(rows, &settings(prior, k)))))
-        .collect();
-    let mut best = SCALES[SCALES.len() - 1];
-    for w in table.windows(2) {
-        let ((k0, s0), (k1, s1)) = (&w[0], &w[1]);
-        let (a, b) = (s0.chi2_ratio.ln(), s1.chi2_ratio.ln());
-        if a >= 0.0 && b <= 0.0 {
-            let t = if a > b { a / (a - b) } else { 0.0 };
-            best = (k0.ln() + t * (k1.ln() - k0.ln())).exp();
-            break;
+/// The per-output posterior σ calibration: the 68.27th percentile of |error|/1σ over the
+/// rows of `out` (temperature scaling; 1 would be calibrated already).
+fn sd_factors(out: &[Outcome]) -> [f64; 6] {
+    core::array::from_fn(|i| {
+        let mut r: Vec<f64> = out
+            .iter()
+            .flatten()
+            .filter(|o| !o.0[i].is_nan())
+            .map(|(e, s, _, _)| e[i].abs() / s[i])
+            .collect();
+        if r.is_empty() {
+            return 1.0;
         }
-    }
-    if table.first().is_some_and(|(_, s)| s.chi2_ratio <= 1.0) {
-        best = SCALES[0];
-    }
-    (((best * 10.0).round() / 10.0), table)
+        r.sort_by(f64::total_cmp);
+        r[((0.6827 * r.len() as f64) as usize).min(r.len() - 1)]
+    })
 }
+
+const ONE: [f64; 6] = [1.0; 6];
 
 fn line(name: &str, s: &Score) -> String {
     format!(
-        "| {name} | {} | {:.2} | {:.2} | {:.2} | {:.2} | {:.1} | {:.1} | {:.1} | {:.1} | {:.1} | {:.2} | {} |",
+        "| {name} | {} | {:.2} | {:.2} | {:.2} | {:.2} | {:.1} | {:.1} | {:.1} | {:.1} | {:.1} | {:.1} | {:.1} | {:.1} | {:.1} | {:.2} | {} |",
         s.n,
         s.mae[0],
         s.mae[1],
         s.mae[2],
         s.mae[3],
+        s.mae[4],
+        s.mae[5],
         100.0 * s.within[0],
         100.0 * s.within[1],
         100.0 * s.within[2],
         100.0 * s.within[3],
+        100.0 * s.within[4],
+        100.0 * s.within[5],
         100.0 * s.flagged,
         s.chi2_ratio,
         s.failed
     )
 }
 
+fn f6(f: &[f64; 6]) -> String {
+    f.iter()
+        .map(|x| format!("{x:.2}"))
+        .collect::<Vec<_>>()
+        .join(" / ")
+}
+
 fn main() {
     let all = drives::read_shared().expect("the single drives (../shared/data)");
     let usable = rows(&all);
     println!(
-        "# {} drives, {} with ball data and club data\n",
+        "# {} drives, {} with ball data and club data, {} of them with the strike location\n",
         all.len(),
-        usable.len()
+        usable.len(),
+        usable.iter().filter(|r| r.strike_m.is_some()).count()
     );
     let driver = Preset::find("driver").expect("driver");
-    let header = "| block | rows | face | path | dyn. loft | attack | face ≤1σ % | path ≤1σ % | loft ≤1σ % | attack ≤1σ % | flagged % | median χ² / expected | failed |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|";
-    println!("## today's defaults (tour prior, launch-monitor noise), mean |model − TrackMan| °\n");
-    println!("{header}");
-    let today = Settings::<f64>::typical(&driver.typical);
-    for s in drives::sessions(&all) {
-        let held: Vec<&Row> = usable.iter().filter(|r| r.session == s).collect();
-        println!("{}", line(&format!("{s}"), &score(&run(&held, &today))));
-    }
-    let every: Vec<&Row> = usable.iter().collect();
-    println!("{}", line("all", &score(&run(&every, &today))));
+    let header = "| block | rows | face ° | path ° | loft ° | attack ° | toe mm | height mm | face ≤1σ % | path ≤1σ % | loft ≤1σ % | attack ≤1σ % | toe ≤1σ % | height ≤1σ % | flagged % | median χ² / expected | failed |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|";
 
-    println!("\n## held-out blocks: prior and σ scale fitted on the other blocks\n");
-    println!("{header} scale |");
-    let mut pooled: Vec<Outcome> = Vec::new();
+    println!("## held-out blocks: prior, model error and σ factors fitted on the other blocks\n");
+    println!("{header}");
+    let mut pooled_raw: Vec<Outcome> = Vec::new();
+    let mut pooled_cal_out: Vec<(Outcome, [f64; 6])> = Vec::new();
+    let mut lines = Vec::new();
     for s in drives::sessions(&all) {
         let train_drives: Vec<&Drive> = all.iter().filter(|d| d.session() != s).collect();
         let prior = fit_prior(&train_drives);
-        let train: Vec<&Row> = usable
-            .iter()
-            .filter(|r| r.session != s)
-            .step_by(2)
-            .collect();
-        let (k, _) = calibrate(&train, prior);
+        let train_all: Vec<&Row> = usable.iter().filter(|r| r.session != s).collect();
+        let (me, n_me) = model_error(&train_all);
+        let st = settings(prior, &me);
+        let train: Vec<&Row> = train_all.iter().copied().step_by(2).collect();
+        let factor = sd_factors(&run(&train, &st));
         let held: Vec<&Row> = usable.iter().filter(|r| r.session == s).collect();
-        let out = run(&held, &settings(prior, k));
-        println!("{} {k} |", line(&format!("{s}"), &score(&out)));
-        pooled.extend(out);
+        let out = run(&held, &st);
+        let m = me.to_array();
+        lines.push(format!(
+            "block {s}: model error from {n_me} training rows: ball speed {:.2} m/s, launch {:.2}°, direction {:.2}°, spin {:.0} rpm, axis {:.2}°; σ factors {}",
+            m[0],
+            m[1].to_degrees(),
+            m[2].to_degrees(),
+            m[3] * 30.0 / core::f64::consts::PI,
+            m[4].to_degrees(),
+            f6(&factor)
+        ));
+        let raw = score(&out, &ONE);
+        let cal = score(&out, &factor);
+        println!("{}", line(&format!("{s} model error"), &raw));
+        println!("{}", line(&format!("{s} + σ factors"), &cal));
+        for o in &out {
+            pooled_cal_out.push((*o, factor));
+        }
+        pooled_raw.extend(out);
     }
-    println!("{} |", line("pooled", &score(&pooled)));
+    println!("{}", line("pooled, model error", &score(&pooled_raw, &ONE)));
+    // pooled coverage with each block's own factors
+    let mut within = [0.0; 6];
+    let mut count = [0.0_f64; 6];
+    for (o, f) in &pooled_cal_out {
+        if let Some((e, sd, _, _)) = o {
+            for i in 0..6 {
+                if !e[i].is_nan() {
+                    count[i] += 1.0;
+                    if e[i].abs() <= f[i] * sd[i] {
+                        within[i] += 1.0;
+                    }
+                }
+            }
+        }
+    }
+    println!(
+        "pooled, + σ factors: within 1σ % {}",
+        (0..6)
+            .map(|i| format!(
+                "{} {:.1}",
+                OUTPUTS[i],
+                100.0 * within[i] / count[i].max(1.0)
+            ))
+            .collect::<Vec<_>>()
+            .join(", ")
+    );
+    for l in &lines {
+        println!("{l}");
+    }
 
     println!("\n## fitted on every block (the core's constants)\n");
+    let every: Vec<&Row> = usable.iter().collect();
     let every_drive: Vec<&Drive> = all.iter().collect();
     let prior = fit_prior(&every_drive);
-    let (k, table) = calibrate(&every, prior);
-    println!("{header}");
-    for (scale, s) in &table {
-        println!("{}", line(&format!("scale {scale}"), s));
-    }
-    // the factor each output's reported 1σ would need to cover 68 % at the chosen scale
-    let out = run(&every, &settings(prior, k));
-    let factors: Vec<f64> = (0..4)
-        .map(|i| {
-            let ratio: Vec<f64> = out
-                .iter()
-                .flatten()
-                .map(|(e, s, _, _)| e[i].abs() / s[i])
-                .collect();
-            let mut r = ratio;
-            r.sort_by(f64::total_cmp);
-            r[(0.6827 * r.len() as f64) as usize]
-        })
-        .collect();
-    println!(
-        "\n68th percentile of |error|/1σ at scale {k} (the 1σ factor each output would need): face {:.2}, path {:.2}, loft {:.2}, attack {:.2}",
-        factors[0], factors[1], factors[2], factors[3]
-    );
+    let (me, n_me) = model_error(&every);
+    let out = run(&every, &settings(prior, &me));
+    let factor = sd_factors(&out);
     let d = f64::to_degrees;
     let (m, sd) = (prior.mean, prior.sd);
     println!(
-        "\nDRIVER_PRIOR_MEAN: face {:.2}°, path {:.2}°, loft {:.2}°, attack {:.2}°, toe {:.4} m, height {:.4} m, speed {:.2} m/s",
+        "DRIVER_PRIOR_MEAN: face {:.2}°, path {:.2}°, loft {:.2}°, attack {:.2}°, toe {:.4} m, height {:.4} m, speed {:.2} m/s",
         d(m.face_angle_rad),
         d(m.club_path_rad),
         d(m.dynamic_loft_rad),
@@ -336,10 +424,19 @@ fn main() {
         sd.impact_height_m,
         sd.club_speed_mps
     );
-    println!("DRIVER_NOISE_SCALE: {k}");
+    println!("DRIVER_MODEL_ERROR ({n_me} rows; SI): {:?}", me.to_array());
+    println!(
+        "DRIVER_SD_SCALE (face, path, loft, attack, toe, height): {}",
+        f6(&factor)
+    );
+    println!("{header}");
+    println!("{}", line("all, model error", &score(&out, &ONE)));
     let core = Settings::<f64>::for_preset(driver);
     println!(
-        "\nthe core's defaults for the driver (Settings::for_preset): {}",
-        line("all", &score(&run(&every, &core)))
+        "{}",
+        line(
+            "all, the core's defaults (Settings::for_preset)",
+            &score(&run(&every, &core), &ONE)
+        )
     );
 }

@@ -278,3 +278,78 @@ fn invalid_inputs_name_their_field() {
     assert_eq!(e(good, none, t), Some(Error::NoConvergence));
     assert!(e(good, none, s).is_none());
 }
+
+/// The posterior σ calibration (`Settings::sd_scale`) and the impact model's error
+/// (`Noise::with_model_error`, issue 34): bad factors are rejected naming their field; a
+/// factor scales the reported 1σ of its unknown (and of what is derived from it) and moves
+/// no estimate; the model error adds to the measurement noise in quadrature.
+#[test]
+fn sd_scale_and_model_error_are_validated_and_do_what_they_say() {
+    let Some(p) = PRESETS.iter().find(|p| p.name == "driver") else {
+        panic!()
+    };
+    let Ok(club) = p.spec::<f64>().validate() else {
+        panic!()
+    };
+    let s = Settings::<f64>::for_preset(p);
+    let y = BallData::from_array([65.0, 0.22, 0.02, 280.0, 0.05]);
+    let c = ClubData {
+        club_speed_mps: Some(44.0),
+        ..ClubData::default()
+    };
+    let e = |s: &Settings<f64>| estimate(&club, &Ball::standard(), &y, &c, s);
+    for bad in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+        for i in 0..7 {
+            let mut t = s;
+            let mut a = t.sd_scale.to_array();
+            a[i] = bad;
+            t.sd_scale = Unknowns::from_array(a);
+            assert_eq!(
+                e(&t).err(),
+                Some(Error::invalid(Field::PosteriorScale, Reason::NotPositive)),
+                "factor {i} = {bad}"
+            );
+        }
+        let mut t = s;
+        t.noise = Noise::launch_monitor()
+            .with_model_error(&BallData::from_array([1.0, 0.01, 0.01, 60.0, bad]));
+        let rejected =
+            e(&t).err() == Some(Error::invalid(Field::MeasurementNoise, Reason::NotPositive));
+        // a zero model error is allowed (the measurement noise alone), not the others
+        assert_eq!(rejected, bad != 0.0, "model error {bad}");
+    }
+    // quadrature: √(σ_meas² + σ_model²) per ball datum
+    let m = BallData::from_array([1.5, 0.009, 0.006, 66.0, 0.107]);
+    let lm = Noise::<f64>::launch_monitor();
+    let q = lm.with_model_error(&m);
+    for ((a, b), c) in lm
+        .ball
+        .to_array()
+        .iter()
+        .zip(m.to_array())
+        .zip(q.ball.to_array())
+    {
+        assert!((c - a.hypot(b)).abs() <= 1e-12 * c, "{a} {b} {c}");
+    }
+    assert_eq!(q.club, lm.club);
+    // the factor scales the reported 1σ only
+    let Ok(base) = e(&Settings {
+        sd_scale: Unknowns::from_array([1.0; 7]),
+        ..s
+    }) else {
+        panic!()
+    };
+    let Ok(wide) = e(&Settings {
+        sd_scale: Unknowns::from_array([2.0, 1.0, 1.0, 0.5, 1.0, 1.0, 1.0]),
+        ..s
+    }) else {
+        panic!()
+    };
+    assert_eq!(base.value, wide.value);
+    assert_eq!(base.consistency, wide.consistency);
+    let (b, w) = (base.sd, wide.sd);
+    assert!((w.face_angle_rad - 2.0 * b.face_angle_rad).abs() <= 1e-12);
+    assert!((w.attack_angle_rad - 0.5 * b.attack_angle_rad).abs() <= 1e-12);
+    assert!((w.club_path_rad - b.club_path_rad).abs() <= 1e-12);
+    assert!(w.face_to_path_rad > b.face_to_path_rad);
+}

@@ -87,6 +87,7 @@ fn run<T: Real>(
             tail_probability: lit(settings.check.tail_probability),
             max_shift_sd: lit(settings.check.max_shift_sd),
         },
+        sd_scale: u(&settings.sd_scale),
     };
     estimate(
         &head::<T>(p),

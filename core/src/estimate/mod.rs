@@ -212,6 +212,26 @@ impl<T: Real> Noise<T> {
         }
     }
 
+    /// This noise with the impact model's own error `model` (1σ per ball datum) added to the
+    /// ball data's in quadrature, `σ = √(σ_meas² + σ_model²)` (the club data's unchanged):
+    /// the σ calibration of issue 34 ([`DRIVER_MODEL_ERROR`]; docs/estimate.md §8.3). A
+    /// non-finite or negative `model` gives a noise that [`estimate`] rejects
+    /// ([`Field::MeasurementNoise`]).
+    #[must_use]
+    pub fn with_model_error(&self, model: &BallData<T>) -> Self {
+        let (s, m) = (self.ball.to_array(), model.to_array());
+        Self {
+            ball: BallData::from_array(core::array::from_fn(|i| {
+                if m[i] >= T::zero() {
+                    (s[i] * s[i] + m[i] * m[i]).sqrt()
+                } else {
+                    lit(f64::NAN)
+                }
+            })),
+            club: self.club,
+        }
+    }
+
     fn validated(&self) -> Result<Self> {
         for s in self.ball.to_array().into_iter().chain(self.club.to_array()) {
             if !(s.is_finite() && s > T::zero()) {
@@ -269,13 +289,41 @@ pub const DRIVER_PRIOR_SD: [f64; 7] = [
     0.0102,    // height 10.2 mm
     5.11,      // club speed
 ];
-/// The σ calibration of the driver on real shots: the ball data's noise
+/// The former σ calibration of the driver on real shots (superseded by
+/// [`DRIVER_MODEL_ERROR`] and [`DRIVER_SD_SCALE`], no longer used by
+/// [`Settings::for_preset`]; docs/estimate.md §8.1): the ball data's noise
 /// ([`Noise::launch_monitor`]) multiplied by this ([`Noise::with_ball_scaled`]), so that the
 /// median χ² of the most probable deliveries on the drives equals its median under the model
 /// ("reduced χ² = 1", on medians because the misfits have heavy tails; docs/estimate.md §8).
 /// It stands for the impact model's own error, which the spec-sheet noise of the launch
 /// monitor does not contain.
 pub const DRIVER_NOISE_SCALE: f64 = 3.3;
+
+/// The impact model's own error on real drives, 1σ per ball datum (SI, the order of
+/// [`BallData`]: ball speed (m/s), launch angle, launch direction (rad), spin (rad/s), spin
+/// axis (rad)), added in quadrature to the launch monitor's noise for the driver
+/// ([`Noise::with_model_error`], [`Settings::for_preset`]; issue 34): the robust sd (1.4826 ×
+/// MAD) of the forward residual — the ball data the impact model gives at TrackMan's club
+/// data and strike location minus TrackMan's ball data — over the single TrackMan drives
+/// that carry the strike location. Reproduced by
+/// `cargo run --release -p carry-lab --example estimate_single_shots` (docs/estimate.md §8.3).
+pub const DRIVER_MODEL_ERROR: [f64; 5] = [
+    1.538,   // ball speed 1.54 m/s (3.4 mph, ≈ 2.5 % at 62 m/s)
+    0.00913, // launch angle 0.52°
+    0.00608, // launch direction 0.35°
+    66.33,   // spin 633 rpm (≈ 23 % at 2,700 rpm)
+    0.1073,  // spin axis 6.1°
+];
+
+/// The driver's posterior σ calibration ([`Settings::sd_scale`]; issue 34), in the order of
+/// [`Unknowns`] (face, path, dynamic loft, attack, strike toe, strike height, club speed):
+/// with the noise of [`DRIVER_MODEL_ERROR`] and the prior of [`Prior::amateur_driver`], the
+/// 68.27th percentile of |estimate − TrackMan| / reported 1σ over the single TrackMan
+/// drives (temperature scaling: the factor that makes the reported 1σ cover 68 %; the toe
+/// and height from the 948 drives that carry the strike location; the club speed, measured
+/// on those drives, is not calibrated: 1). Reproduced by
+/// `cargo run --release -p carry-lab --example estimate_single_shots` (docs/estimate.md §8.3).
+pub const DRIVER_SD_SCALE: [f64; 7] = [0.51, 1.10, 0.77, 1.47, 1.09, 0.87, 1.0];
 
 /// The default tail probability of the consistency check ([`Check::tail_probability`]): a
 /// consistent shot is flagged by the χ² bound once in 1,000.
@@ -483,6 +531,12 @@ pub struct Settings<T> {
     pub posterior: Posterior,
     /// When the data are judged inconsistent ([`Estimate::consistency`]).
     pub check: Check<T>,
+    /// The posterior σ calibration, per unknown (finite, > 0; 1 = none): the posterior
+    /// covariance `C` is reported as `D C D`, `D = diag(sd_scale)`, so every reported 1σ
+    /// (also of face to path, spin loft and smash) is scaled consistently. It stands for
+    /// what the Gaussian model of the noise and prior gets wrong on real shots (fitted on
+    /// them: [`DRIVER_SD_SCALE`]); it moves no estimate and not the consistency check.
+    pub sd_scale: Unknowns<T>,
 }
 
 impl<T: Real> Settings<T> {
@@ -497,19 +551,24 @@ impl<T: Real> Settings<T> {
             tolerance: lit(TOLERANCE),
             posterior: Posterior::Profile,
             check: Check::standard(),
+            sd_scale: Unknowns::from_array([T::one(); 7]),
         }
     }
 
-    /// The defaults of a preset: for the driver, the prior and σ calibration fitted on the
-    /// single TrackMan drives ([`Prior::amateur_driver`], [`DRIVER_NOISE_SCALE`]; issue 34);
+    /// The defaults of a preset: for the driver, the prior, the impact model's error and the
+    /// posterior σ calibration fitted on the single TrackMan drives ([`Prior::amateur_driver`],
+    /// [`DRIVER_MODEL_ERROR`], [`DRIVER_SD_SCALE`]; issue 34);
     /// for every other club, [`Settings::typical`] of its typical delivery.
     #[must_use]
     pub fn for_preset(preset: &crate::Preset) -> Self {
         let typical = Self::typical(&preset.typical);
         if preset.name == "driver" {
             Self {
-                noise: typical.noise.with_ball_scaled(lit(DRIVER_NOISE_SCALE)),
+                noise: typical
+                    .noise
+                    .with_model_error(&BallData::from_array(DRIVER_MODEL_ERROR.map(lit))),
                 prior: Prior::amateur_driver(),
+                sd_scale: Unknowns::from_array(DRIVER_SD_SCALE.map(lit)),
                 ..typical
             }
         } else {
@@ -646,6 +705,11 @@ pub fn estimate<T: Real>(
         return Err(Error::invalid(Field::Tolerance, Reason::OutOfRange));
     }
     settings.check.validated()?;
+    for f in settings.sd_scale.to_array() {
+        if !(f.is_finite() && f > T::zero()) {
+            return Err(Error::invalid(Field::PosteriorScale, Reason::NotPositive));
+        }
+    }
     let half = lit::<T>(FRAC_PI_2);
     if let Some(v) = club_data.club_speed_mps {
         range(v, T::zero(), lit(150.0), Field::ClubSpeed)?;

@@ -129,6 +129,7 @@ pub(super) fn run<T: Real>(
         tolerance,
         posterior: summary,
         check,
+        sd_scale,
     } = *settings;
     let measured_club = [
         club_data.face_angle_rad,
@@ -173,7 +174,7 @@ pub(super) fn run<T: Real>(
     };
     let start = start(&problem, measured, &measured_club)?;
     let solution = iterate(&problem, start, max_iterations, tolerance)?;
-    let mut e = posterior(&problem, &solution, club_data, summary)?;
+    let mut e = posterior(&problem, &solution, club_data, summary, &sd_scale)?;
     e.consistency = consistency(
         &problem.residual(&solution.f),
         &solution.x,
@@ -631,12 +632,14 @@ fn valley<T: Real>(
 
 /// The posterior: value and 1σ of every datum, the mean and `√(cᵀ Σ c)` for its gradient
 /// `c`, with `Σ` the Laplace covariance `A⁻¹` in every direction but the strike height's
-/// valley, where the profile posterior replaces it.
+/// valley, where the profile posterior replaces it; reported as `D Σ D`, `D =
+/// diag(sd_scale)` (the posterior σ calibration, [`Settings::sd_scale`]).
 fn posterior<T: Real>(
     problem: &Problem<'_, T>,
     solution: &Solution<T>,
     club_data: &ClubData<T>,
     summary: Posterior,
+    sd_scale: &Unknowns<T>,
 ) -> Result<Estimate<T>> {
     let Solution {
         x,
@@ -657,6 +660,8 @@ fn posterior<T: Real>(
         mean += shift;
         cov = c;
     }
+    let d = V7::<T>::from(sd_scale.to_array());
+    cov = cov.component_mul(&(d * d.transpose()));
     let sd = |c: V7<T>| -> Result<T> {
         let var = c.dot(&(cov * c));
         Ok(if var > T::zero() {
