@@ -1,7 +1,6 @@
 //! `carry_*_default_*`: fill an input struct with the CLI's defaults.
 
-use crate::error::CarryError;
-use crate::error::code;
+use crate::error::{CarryError, code};
 use crate::ptr::{non_null, write};
 
 /// Writes `value` to `out`.

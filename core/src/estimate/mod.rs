@@ -202,8 +202,8 @@ impl<T: Real> Noise<T> {
     }
 
     /// This noise with the ball data's 1σ multiplied by `factor` (the club data's unchanged):
-    /// the σ calibration of issue 34, where `factor` stands for the impact model's own
-    /// error on real shots ([`DRIVER_NOISE_SCALE`]; docs/estimate.md §8).
+    /// one factor for the impact model's own error on real shots (the first σ calibration of
+    /// issue 34, docs/estimate.md §8.1; the driver now uses [`Noise::with_model_error`]).
     #[must_use]
     pub fn with_ball_scaled(&self, factor: T) -> Self {
         Self {
@@ -289,15 +289,6 @@ pub const DRIVER_PRIOR_SD: [f64; 7] = [
     0.0102,    // height 10.2 mm
     5.11,      // club speed
 ];
-/// The former σ calibration of the driver on real shots (superseded by
-/// [`DRIVER_MODEL_ERROR`] and [`DRIVER_SD_SCALE`], no longer used by
-/// [`Settings::for_preset`]; docs/estimate.md §8.1): the ball data's noise
-/// ([`Noise::launch_monitor`]) multiplied by this ([`Noise::with_ball_scaled`]), so that the
-/// median χ² of the most probable deliveries on the drives equals its median under the model
-/// ("reduced χ² = 1", on medians because the misfits have heavy tails; docs/estimate.md §8).
-/// It stands for the impact model's own error, which the spec-sheet noise of the launch
-/// monitor does not contain.
-pub const DRIVER_NOISE_SCALE: f64 = 3.3;
 
 /// The impact model's own error on real drives, 1σ per ball datum (SI, the order of
 /// [`BallData`]: ball speed (m/s), launch angle, launch direction (rad), spin (rad/s), spin
