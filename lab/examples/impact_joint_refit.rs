@@ -18,9 +18,9 @@ use carry_core::presets::FITTED_COMPLIANT;
 use carry_lab::drives::{self, Drive};
 use carry_lab::fit::impact::DeliveryRow;
 use carry_lab::fit::joint_contact::{
-    JointContactProblem, JointRow as Row, drive_model, read_table, table_model,
+    JointContactProblem, JointRow as Row, read_table, table_model,
 };
-use carry_lab::fit::single_drives::{self, compliant, observed, typical_strike_m};
+use carry_lab::fit::single_drives::{self, compliant, drive_model, observed, typical_strike_m};
 use carry_lab::fit::{Problem, solve};
 use rayon::prelude::*;
 

@@ -68,10 +68,26 @@ pub struct DeliveryRow {
 /// # Errors
 /// A one-line message naming the line and column at fault.
 pub fn read_rows(text: &str) -> Result<Vec<DeliveryRow>, String> {
+    read_rows_or(text, None)
+}
+
+/// As [`read_rows`]; without a `club` column, every row is `default`'s preset with its
+/// label (a driver chart: TrackMan's 2010 optimizer), else the `club` column is required.
+///
+/// # Errors
+/// As [`read_rows`].
+pub fn read_rows_or(
+    text: &str,
+    default: Option<(&'static Preset, &str)>,
+) -> Result<Vec<DeliveryRow>, String> {
     let mut lines = text.lines().filter(|l| !l.trim().is_empty());
     let header = crate::columns::Header::of(lines.next().ok_or("empty file")?);
-    let [club, speed, attack, loft, ball, launch, spin] = header.columns([
-        "club",
+    let club = match (header.column("club"), default) {
+        (Ok(c), _) => Some(c),
+        (Err(_), Some(_)) => None,
+        (Err(e), None) => return Err(e),
+    };
+    let [speed, attack, loft, ball, launch, spin] = header.columns([
         "club_speed_mph",
         "attack_deg",
         "dynamic_loft_deg",
@@ -97,16 +113,24 @@ pub fn read_rows(text: &str) -> Result<Vec<DeliveryRow>, String> {
                         at(c)
                     ))
             };
-            let preset = Preset::find(at(club)).ok_or(format!(
-                "line {}: club: no preset '{}'",
-                i + 2,
-                at(club)
-            ))?;
+            let (preset, label) = match (club, default) {
+                (Some(c), _) => {
+                    let preset = Preset::find(at(c)).ok_or(format!(
+                        "line {}: club: no preset '{}'",
+                        i + 2,
+                        at(c)
+                    ))?;
+                    let label = who.map_or_else(
+                        || preset.name.to_owned(),
+                        |w| format!("{} {}", at(w), preset.name),
+                    );
+                    (preset, label)
+                }
+                (None, Some((preset, label))) => (preset, label.to_owned()),
+                (None, None) => return Err("no club column".to_owned()),
+            };
             Ok(DeliveryRow {
-                label: who.map_or_else(
-                    || preset.name.to_owned(),
-                    |w| format!("{} {}", at(w), preset.name),
-                ),
+                label,
                 preset,
                 club_speed_mps: mph(num(speed)?),
                 attack_deg: num(attack)?,

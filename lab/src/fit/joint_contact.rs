@@ -16,12 +16,10 @@ use super::Problem;
 use super::impact::{
     self, BALL_SPEED_SIGMA_REL, DeliveryRow, LAUNCH_SIGMA_DEG, PARAMETERS, SPIN_SIGMA_REL,
 };
-use super::single_drives::{self, compliant, observed};
+use super::single_drives::{self, compliant, drive_model, observed, strike};
 use crate::drives::Drive;
-use carry_core::impact::{ContactLaw, Solver};
+use carry_core::impact::ContactLaw;
 use carry_core::presets::{FITTED_COMPLIANT, TypicalDelivery};
-use carry_core::units::{MPS_PER_MPH, to_deg, to_rpm};
-use carry_core::{Ball, ClubSpec, Delivery, DeliveryConvention, Preset};
 
 /// k_e's bounds (s/m) with drives in the fit: Penner (2001) measures 0.0029; the law's
 /// calibration is 0.0027.
@@ -89,67 +87,6 @@ impl JointContactProblem {
     }
 }
 
-/// Ball speed (m/s), launch (°), direction (°), spin (rpm) and axis (°) of `delivery` struck
-/// by `preset` with `law` in TrackMan's convention, the driver's CG at height `cg_y` (m)
-/// when given.
-///
-/// # Errors
-/// The club, the strike or the impact's error, as text.
-pub fn strike(
-    preset: &Preset,
-    law: ContactLaw<f64>,
-    cg_y: Option<f64>,
-    delivery: &Delivery<f64>,
-) -> Result<[f64; 5], String> {
-    let mut spec = ClubSpec {
-        contact: law,
-        ..preset.spec::<f64>()
-    };
-    if let (Some(y), "driver") = (cg_y, preset.name) {
-        spec.cg_to_face_m.y = y;
-    }
-    let club = spec.validate().map_err(|e| e.to_string())?;
-    let st = delivery
-        .strike_in(&club, DeliveryConvention::TrackMan)
-        .map_err(|e| e.to_string())?;
-    let l = carry_core::impact::solve(&club, &Ball::standard(), &st, Solver::Reduced)
-        .map_err(|e| e.to_string())?
-        .launch;
-    Ok([
-        l.ball_speed_mps,
-        to_deg(l.launch_angle_rad),
-        to_deg(l.launch_direction_rad),
-        to_rpm(l.spin_radps),
-        to_deg(l.spin_axis_rad),
-    ])
-}
-
-/// A drive struck with `law` (driver CG at `cg_y`) at its measured location when `located`
-/// and it has one, else at `typical`.
-///
-/// # Errors
-/// No full delivery, or [`strike`]'s.
-pub fn drive_model(
-    d: &Drive,
-    law: ContactLaw<f64>,
-    cg_y: Option<f64>,
-    located: bool,
-    typical: [f64; 2],
-) -> Result<[f64; 5], String> {
-    let loc = if located {
-        d.strike_m.unwrap_or(typical)
-    } else {
-        typical
-    };
-    let club = d.full_delivery().ok_or("no full delivery")?;
-    strike(
-        single_drives::driver(),
-        law,
-        cg_y,
-        &single_drives::delivery(club, loc),
-    )
-}
-
 /// A table row struck with `law` (ball speed, launch, spin); with `data_strike`, a driver
 /// row is struck at that location instead of the row's typical height.
 ///
@@ -187,47 +124,7 @@ pub fn table_model(
 /// # Errors
 /// A one-line message naming the line and column at fault.
 pub fn read_table(text: &str, label: &str) -> Result<Vec<DeliveryRow>, String> {
-    let mut lines = text.lines().filter(|l| !l.trim().is_empty());
-    let header = crate::columns::Header::of(lines.next().ok_or("empty file")?);
-    if header.column("club").is_ok() {
-        return impact::read_rows(text);
-    }
-    let [speed, attack, loft, ball, launch, spin] = header.columns([
-        "club_speed_mph",
-        "attack_deg",
-        "dynamic_loft_deg",
-        "ball_speed_mph",
-        "launch_deg",
-        "spin_rpm",
-    ])?;
-    let driver = single_drives::driver();
-    lines
-        .enumerate()
-        .map(|(i, line)| {
-            let f: Vec<&str> = line.split(',').map(str::trim).collect();
-            let num = |c: usize| -> Result<f64, String> {
-                let t = f.get(c).copied().unwrap_or("");
-                t.parse::<f64>()
-                    .ok()
-                    .filter(|x| x.is_finite())
-                    .ok_or(format!(
-                        "line {}: {}: '{t}' is not a number",
-                        i + 2,
-                        header.name(c)
-                    ))
-            };
-            Ok(DeliveryRow {
-                label: label.to_owned(),
-                preset: driver,
-                club_speed_mps: num(speed)? * MPS_PER_MPH,
-                attack_deg: num(attack)?,
-                dynamic_loft_deg: num(loft)?,
-                ball_speed_mps: num(ball)? * MPS_PER_MPH,
-                launch_deg: num(launch)?,
-                spin_rpm: num(spin)?,
-            })
-        })
-        .collect()
+    impact::read_rows_or(text, Some((single_drives::driver(), label)))
 }
 
 impl Problem for JointContactProblem {

@@ -62,23 +62,7 @@ pub(super) fn produce(cmd: &FitRequest, value: bool) -> Result<Produced, Failure
     if rows.is_empty() {
         return Err(InputError::new("input", format!("{}: no rows", cmd.input.display())).into());
     }
-    let options = FitOptions {
-        leave_one_out: !cmd.no_cross_validation,
-    };
-    let bar = progress(cmd, &options, rows.len());
-    let tick = || {
-        if let Some(b) = &bar {
-            b.inc(1);
-        }
-    };
-    let result = match &given {
-        Some(p) => fit::evaluate(&problem, &rows, p),
-        None => fit::fit(&problem, &rows, options, &tick),
-    }
-    .map_err(|e| Failure::Other(format!("the fit failed: {e}")))?;
-    if let Some(b) = &bar {
-        b.finish_and_clear();
-    }
+    let result = run(cmd, &problem, &rows, given.as_deref(), rows.len())?;
     let law = impact::law(&result.values(), problem.friction);
     if let Some(path) = &cmd.output {
         let q = |name: &str| result.summary_of(name).copied().unwrap_or_default();
@@ -158,17 +142,40 @@ fn read_file(
     Ok(())
 }
 
-/// A progress bar for the fit's solves (one, plus one per held-out group or row), on a
-/// terminal only.
-fn progress(
+/// Fits `problem` to `rows` (or evaluates it at `given`) as `cmd` asks: leave-one-out unless
+/// `--no-cross-validation`, with a progress bar on a terminal (one tick per solve: one,
+/// plus one per held-out group or row, `holdouts` of them).
+///
+/// # Errors
+/// A fit that fails.
+fn run<P: fit::Problem>(
     cmd: &FitRequest,
-    options: &FitOptions,
+    problem: &P,
+    rows: &[P::Row],
+    given: Option<&[f64]>,
     holdouts: usize,
-) -> Option<indicatif::ProgressBar> {
-    (!cmd.no_progress && std::io::stderr().is_terminal()).then(|| {
+) -> Result<Fit, Failure> {
+    let options = FitOptions {
+        leave_one_out: !cmd.no_cross_validation,
+    };
+    let bar = (!cmd.no_progress && std::io::stderr().is_terminal()).then(|| {
         let solves = 1 + if options.leave_one_out { holdouts } else { 0 };
         indicatif::ProgressBar::new(solves as u64)
-    })
+    });
+    let tick = || {
+        if let Some(b) = &bar {
+            b.inc(1);
+        }
+    };
+    let result = match given {
+        Some(p) => fit::evaluate(problem, rows, p),
+        None => fit::fit(problem, rows, options, &tick),
+    }
+    .map_err(|e| Failure::Other(format!("the fit failed: {e}")))?;
+    if let Some(b) = &bar {
+        b.finish_and_clear();
+    }
+    Ok(result)
 }
 
 /// The joint fit of tables and single drives ([`JointContactProblem`]): as [`produce`],
@@ -195,23 +202,7 @@ fn produce_joint(
         .iter()
         .filter_map(|r| fit::Problem::group(&problem, r))
         .collect();
-    let options = FitOptions {
-        leave_one_out: !cmd.no_cross_validation,
-    };
-    let bar = progress(cmd, &options, sessions.len() + n_tables);
-    let tick = || {
-        if let Some(b) = &bar {
-            b.inc(1);
-        }
-    };
-    let result = match given {
-        Some(p) => fit::evaluate(&problem, &rows, p),
-        None => fit::fit(&problem, &rows, options, &tick),
-    }
-    .map_err(|e| Failure::Other(format!("the fit failed: {e}")))?;
-    if let Some(b) = &bar {
-        b.finish_and_clear();
-    }
+    let result = run(cmd, &problem, &rows, given, sessions.len() + n_tables)?;
     let is_drive = |r: &super::report::RowResult| r.row <= n_drives; // rows are 1-based
     let drives_summary = result.summaries_of_rows(is_drive);
     let tables_summary = result.summaries_of_rows(|r| !is_drive(r));

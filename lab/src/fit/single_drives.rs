@@ -80,7 +80,8 @@ pub fn delivery(club: [f64; 5], location: [f64; 2]) -> Delivery<f64> {
 
 /// Ball speed (m/s), launch (°), direction (°), spin (rpm) and axis (°, the impact's own) of
 /// `drive` struck by the `driver` head with `contact` at its measured strike location when
-/// `use_location` and it has one, else at `typical` (`[toe, height]`, m).
+/// `use_location` and it has one, else at `typical` (`[toe, height]`, m): [`drive_model`]
+/// with the preset's CG.
 ///
 /// # Errors
 /// The drive has no full delivery, or the core's error, as a message.
@@ -90,22 +91,33 @@ pub fn predict(
     use_location: bool,
     typical: [f64; 2],
 ) -> Result<[f64; 5], String> {
-    let club = ClubSpec {
-        contact,
-        ..driver().spec::<f64>()
-    }
-    .validate()
-    .map_err(|e| e.to_string())?;
-    let d = drive.full_delivery().ok_or("no full delivery")?;
-    let location = if use_location {
-        drive.strike_m.unwrap_or(typical)
-    } else {
-        typical
+    drive_model(drive, contact, None, use_location, typical)
+}
+
+/// Ball speed (m/s), launch (°), direction (°), spin (rpm) and axis (°) of `delivery` struck
+/// by `preset` with `law` in TrackMan's convention, the driver's CG at height `cg_y` (m)
+/// when given.
+///
+/// # Errors
+/// The club, the strike or the impact's error, as text.
+pub fn strike(
+    preset: &Preset,
+    law: ContactLaw<f64>,
+    cg_y: Option<f64>,
+    delivery: &Delivery<f64>,
+) -> Result<[f64; 5], String> {
+    let mut spec = ClubSpec {
+        contact: law,
+        ..preset.spec::<f64>()
     };
-    let strike = delivery(d, location)
+    if let (Some(y), "driver") = (cg_y, preset.name) {
+        spec.cg_to_face_m.y = y;
+    }
+    let club = spec.validate().map_err(|e| e.to_string())?;
+    let st = delivery
         .strike_in(&club, DeliveryConvention::TrackMan)
         .map_err(|e| e.to_string())?;
-    let l = impact::solve(&club, &Ball::standard(), &strike, Solver::Reduced)
+    let l = impact::solve(&club, &Ball::standard(), &st, Solver::Reduced)
         .map_err(|e| e.to_string())?
         .launch;
     Ok([
@@ -115,6 +127,27 @@ pub fn predict(
         to_rpm(l.spin_radps),
         to_deg(l.spin_axis_rad),
     ])
+}
+
+/// A drive struck with `law` (driver CG at `cg_y`) at its measured location when `located`
+/// and it has one, else at `typical`.
+///
+/// # Errors
+/// No full delivery, or [`strike`]'s.
+pub fn drive_model(
+    d: &Drive,
+    law: ContactLaw<f64>,
+    cg_y: Option<f64>,
+    located: bool,
+    typical: [f64; 2],
+) -> Result<[f64; 5], String> {
+    let loc = if located {
+        d.strike_m.unwrap_or(typical)
+    } else {
+        typical
+    };
+    let club = d.full_delivery().ok_or("no full delivery")?;
+    strike(driver(), law, cg_y, &delivery(club, loc))
 }
 
 /// The measured `[ball speed m/s, launch °, direction °, spin rpm, axis °]` of `drive`, when
