@@ -15,7 +15,8 @@ use carry_io::units::Units;
 use clap::Args;
 use std::path::PathBuf;
 
-fn finite(s: &str) -> Result<f64, String> {
+/// A finite number (every numeric option's value parser).
+pub(crate) fn finite(s: &str) -> Result<f64, String> {
     parse_finite(s)
 }
 fn radius(s: &str) -> Result<f64, String> {

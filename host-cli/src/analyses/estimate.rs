@@ -3,7 +3,7 @@
 
 use super::from_flight::FlightObsArgs;
 use super::output;
-use crate::args::{ClubArgs, LaunchArgs, OutputArgs, PrecisionArgs, SceneArgs};
+use crate::args::{ClubArgs, LaunchArgs, OutputArgs, PrecisionArgs, SceneArgs, finite};
 use carry_io::compute::{Numerics, PosteriorChoice};
 use carry_io::error::Failure;
 use carry_io::params::{Key, Params};
@@ -11,10 +11,6 @@ use carry_io::units::{Quantity, Units};
 use carry_lab::request::{EstimateRecord, MeasuredClub};
 use clap::Args;
 use std::fmt::Write as _;
-
-fn finite(s: &str) -> Result<f64, String> {
-    carry_io::params::parse_finite(s)
-}
 
 /// What the launch monitor measured of the club (each optional).
 #[derive(Debug, Clone, Args)]

@@ -5,7 +5,7 @@
 //! observations from the options below and `--track FILE.csv`.
 
 use super::output;
-use crate::args::{LaunchArgs, OutputArgs, PrecisionArgs, SceneArgs};
+use crate::args::{LaunchArgs, OutputArgs, PrecisionArgs, SceneArgs, finite};
 use carry_io::compute::Numerics;
 use carry_io::error::{Failure, InputError};
 use carry_io::params::Params;
@@ -16,10 +16,6 @@ use carry_lab::launch_fit::{
 use clap::Args;
 use std::fmt::Write as _;
 use std::path::PathBuf;
-
-fn finite(s: &str) -> Result<f64, String> {
-    carry_io::params::parse_finite(s)
-}
 
 fn vec3(s: &str) -> Result<[f64; 3], String> {
     let v: Vec<f64> = s.split(',').map(finite).collect::<Result<_, _>>()?;
