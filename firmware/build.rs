@@ -117,11 +117,11 @@ fn impact(golden: &[carry_golden::ImpactCase], code: &mut String) {
         };
         let hosts32: Vec<String> = cases::VARIANTS
             .iter()
-            .map(|&(_, s, c)| host::<f32, IMPACT_OUTPUTS>(input.outputs_with(s, c), bits32))
+            .map(|&(_, s, c, k)| host::<f32, IMPACT_OUTPUTS>(input.outputs_with(s, c, k), bits32))
             .collect();
         let hosts64: Vec<String> = cases::VARIANTS
             .iter()
-            .map(|&(_, s, c)| host::<f64, IMPACT_OUTPUTS>(input.outputs_with(s, c), bits64))
+            .map(|&(_, s, c, k)| host::<f64, IMPACT_OUTPUTS>(input.outputs_with(s, c, k), bits64))
             .collect();
         writeln!(
             code,

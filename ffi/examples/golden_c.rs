@@ -263,8 +263,8 @@ fn precision<T: Real>(
     let mut names = Vec::new();
     let mut inits = Vec::new();
     for case in golden::impact_cases() {
-        for (variant, solver, compliant) in golden::variants() {
-            let input = golden::impact_input::<T>(&case.input, solver, compliant);
+        for (variant, solver, compliant, share) in golden::variants() {
+            let input = golden::impact_input::<T>(&case.input, solver, compliant, share);
             let name = format!("{}/{variant}", case.name);
             let r = run_impact(&input).map(|o| golden::impact_outputs(&o).to_vec());
             t.expected.push_str(&line::<T>("impact", &name, r));

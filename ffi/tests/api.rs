@@ -118,12 +118,12 @@ fn same_bits<T: Api>(what: &str, a: &[T], b: &[T]) {
 fn impact_golden<T: Api>() {
     let mut n = 0;
     for case in golden::impact_cases() {
-        for (variant, solver, compliant) in golden::variants() {
+        for (variant, solver, compliant, share) in golden::variants() {
             let core_solver = cases::VARIANTS.iter().find(|v| v.0 == variant).map(|v| v.1);
-            let core = case
-                .input
-                .outputs_with::<T>(core_solver.unwrap_or_default(), compliant);
-            let input = golden::impact_input::<T>(&case.input, solver, compliant);
+            let core =
+                case.input
+                    .outputs_with::<T>(core_solver.unwrap_or_default(), compliant, share);
+            let input = golden::impact_input::<T>(&case.input, solver, compliant, share);
             let mut out = zeroed::<CarryImpactResult<T>>();
             let code = T::impact(&input, &mut out);
             let what = format!("{} {variant}", case.name);

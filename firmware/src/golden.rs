@@ -32,9 +32,9 @@ pub struct ImpactCase {
     /// Reference: ball velocity (3) and ball spin (3), or the error.
     pub expected: Expected<6>,
     /// Host results in f32, per variant.
-    pub host_f32: [Host<IMPACT_OUTPUTS>; 3],
+    pub host_f32: [Host<IMPACT_OUTPUTS>; crate::cases::VARIANTS.len()],
     /// Host results in f64, per variant.
-    pub host_f64: [Host<IMPACT_OUTPUTS>; 3],
+    pub host_f64: [Host<IMPACT_OUTPUTS>; crate::cases::VARIANTS.len()],
 }
 
 /// One flight case: input, reference (carry, side, flight time, apex) and host results

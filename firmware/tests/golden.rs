@@ -22,13 +22,13 @@ use carry_firmware::golden::{Expected, FLIGHT, GROUND, Host, IMPACT};
 use carry_firmware::ground_cases::{GROUND_CASES, GROUND_NAMES};
 
 fn impact_bit_identity<T: Precision>(
-    host: impl Fn(&carry_firmware::golden::ImpactCase) -> &[Host<23>; 3],
+    host: impl Fn(&carry_firmware::golden::ImpactCase) -> &[Host<23>; VARIANTS.len()],
 ) {
     let mut compared = 0u32;
     let mut differ = 0u32;
     for case in IMPACT {
-        for (k, (sname, solver, compliant)) in VARIANTS.iter().enumerate() {
-            let target = case.input.outputs_with::<T>(*solver, *compliant);
+        for (k, (sname, solver, compliant, share)) in VARIANTS.iter().enumerate() {
+            let target = case.input.outputs_with::<T>(*solver, *compliant, *share);
             compared += 1;
             if !identical(case.name, sname, &IMPACT_NAMES, &target, &host(case)[k]) {
                 differ += 1;

@@ -58,23 +58,30 @@ pub fn flight_cases() -> Vec<FlightCase> {
 }
 
 /// The impact variants of the on-target suite (`cases::VARIANTS`) as C solver and
-/// contact selectors: (name, solver, compliant).
-pub fn variants() -> [(&'static str, u32, bool); 3] {
-    crate::cases::VARIANTS.map(|(name, solver, compliant)| {
+/// contact selectors: (name, solver, compliant, spin-axis share).
+pub fn variants() -> [(&'static str, u32, bool, f64); crate::cases::VARIANTS.len()] {
+    crate::cases::VARIANTS.map(|(name, solver, compliant, share)| {
         let s = match solver {
             Solver::Reduced => CARRY_SOLVER_REDUCED,
             Solver::Full(_) => CARRY_SOLVER_FULL,
         };
-        (name, s, compliant)
+        (name, s, compliant, share)
     })
 }
 
-/// The C input of an impact case with a solver and (`compliant`) the presets' contact.
-pub fn impact_input<T: Real>(c: &ImpactInput, solver: u32, compliant: bool) -> CarryImpactInput<T> {
+/// The C input of an impact case with a solver, (`compliant`) the presets' contact and the
+/// club's spin-axis share.
+pub fn impact_input<T: Real>(
+    c: &ImpactInput,
+    solver: u32,
+    compliant: bool,
+    spin_axis_share: f64,
+) -> CarryImpactInput<T> {
     let mut spec = c.club::<T>();
     if compliant {
         spec.contact = FITTED_CONTACT.cast();
     }
+    spec.spin_axis_share = carry_core::real::lit(spin_axis_share);
     let club = CarryClub::from_spec(&spec);
     debug_assert!(!compliant || club.contact == CARRY_CONTACT_COMPLIANT);
     let d = c.delivery::<T>();
