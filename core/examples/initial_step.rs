@@ -125,6 +125,7 @@ fn firmware_launch<T: Real>(everyday: bool) -> BallMotion<T> {
         cg_to_face_m: Vector3::new(c(0.04), T::zero(), T::zero()),
         restitution: c(0.83),
         contact: ContactLaw::Rolling,
+        spin_axis_share: T::one(),
     };
     let mut d = Delivery {
         club_speed_mps: c(45.0),

@@ -36,15 +36,24 @@ pub struct ClubSpec<T: Real> {
     pub restitution: T,
     /// The face–ball contact law ([`ContactLaw::Rolling`] is the seed's).
     pub contact: ContactLaw<T>,
+    /// The empirical D-plane share k of the launch's spin axis, in (0, 1]
+    /// ([`crate::impact::axis_share`]; docs/impact.md §0.8): `tan a' = k·tan a`. A named
+    /// empirical option beside the physics; 1 (every preset's, [`ClubSpec::PHYSICS_AXIS`])
+    /// is the impact's own axis, bit for bit.
+    pub spin_axis_share: T,
 }
 
 impl<T: Real> ClubSpec<T> {
+    /// The [`ClubSpec::spin_axis_share`] that leaves the impact's own spin axis (1).
+    pub const PHYSICS_AXIS: f64 = 1.0;
+
     /// Validates every parameter and precomputes what the solvers need.
     ///
     /// # Errors
     /// [`Error::InvalidInput`] naming the first bad parameter: non-finite values,
     /// non-positive mass or radii, an inertia tensor that is not symmetric positive
-    /// definite, `e` outside [0, 1], an infinite depth radius with a curved face.
+    /// definite, `e` outside [0, 1], an infinite depth radius with a curved face, a spin-axis
+    /// share outside (0, 1].
     pub fn validate(&self) -> Result<ClubHead<T>> {
         let mass_kg = positive(self.mass_kg, Field::ClubMass)?;
         let inertia = validate_inertia(&self.inertia_kgm2)?;
@@ -72,6 +81,15 @@ impl<T: Real> ClubSpec<T> {
         let restitution = in_range(self.restitution, T::zero(), T::one(), Field::Restitution)?;
         finite(restitution, Field::Restitution)?;
         let contact = self.contact.validate()?;
+        let spin_axis_share = self.spin_axis_share;
+        if !(spin_axis_share > T::zero() && spin_axis_share <= T::one()) {
+            let reason = if spin_axis_share.is_finite() {
+                Reason::OutOfRange
+            } else {
+                Reason::NotFinite
+            };
+            return Err(Error::invalid(Field::SpinAxisShare, reason));
+        }
         Ok(ClubHead {
             mass_kg,
             inertia_kgm2: inertia,
@@ -82,6 +100,7 @@ impl<T: Real> ClubSpec<T> {
             cg_to_face_m,
             restitution,
             contact,
+            spin_axis_share,
         })
     }
 }
@@ -183,6 +202,7 @@ pub struct ClubHead<T: Real> {
     cg_to_face_m: Vector3<T>,
     restitution: T,
     contact: ContactLaw<T>,
+    spin_axis_share: T,
 }
 
 impl<T: Real> ClubHead<T> {
@@ -230,6 +250,11 @@ impl<T: Real> ClubHead<T> {
     #[must_use]
     pub fn contact_law(&self) -> &ContactLaw<T> {
         &self.contact
+    }
+    /// The empirical D-plane share of the spin axis, in (0, 1] (1: the physics).
+    #[must_use]
+    pub fn spin_axis_share(&self) -> T {
+        self.spin_axis_share
     }
 }
 

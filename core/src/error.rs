@@ -38,6 +38,8 @@ pub enum Field {
     TangentialRestitutionSlope,
     /// Ceiling of the compliant contact's tangential restitution.
     TangentialRestitutionMax,
+    /// The club's empirical D-plane share of the spin axis.
+    SpinAxisShare,
     /// Fall of the normal restitution per m/s of normal impact speed (s/m).
     RestitutionSpeedSlope,
     // --- ball ---
@@ -335,6 +337,7 @@ impl Field {
             Self::TangentialRestitution => "tangential restitution",
             Self::TangentialRestitutionSlope => "tangential restitution slope",
             Self::TangentialRestitutionMax => "tangential restitution ceiling",
+            Self::SpinAxisShare => "spin-axis share",
             Self::RestitutionSpeedSlope => "restitution speed slope",
             Self::BallMass => "ball mass",
             Self::BallRadius => "ball radius",

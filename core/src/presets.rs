@@ -508,6 +508,7 @@ impl Preset {
             cg_to_face_m: Vector3::new(lit(cx), lit(cy), lit(cz)),
             restitution: lit(self.restitution),
             contact: self.contact.cast(),
+            spin_axis_share: lit(ClubSpec::<T>::PHYSICS_AXIS),
         }
     }
 }

@@ -107,6 +107,7 @@ fn club<T: Real>(c: &CarryClub<T>) -> String {
         )
         .f("restitution_speed_slope_spm", c.restitution_speed_slope_spm)
         .f("tangential_restitution_max", c.tangential_restitution_max)
+        .f("spin_axis_share", c.spin_axis_share)
         .end()
 }
 

@@ -310,6 +310,9 @@ typedef struct CarryClub_f32 {
   float restitution_speed_slope_spm;
   // Compliant contact: ceiling of the tangential restitution, in [0, 1] (1: none).
   float tangential_restitution_max;
+  // The empirical D-plane share of the spin axis, in (0, 1]: `tan a' = k tan a`
+  // (docs/impact.md §0.8); 1 (the presets' and defaults') is the impact's own axis.
+  float spin_axis_share;
 } CarryClub_f32;
 
 // A club head in single precision.
@@ -348,6 +351,9 @@ typedef struct CarryClub_f64 {
   double restitution_speed_slope_spm;
   // Compliant contact: ceiling of the tangential restitution, in [0, 1] (1: none).
   double tangential_restitution_max;
+  // The empirical D-plane share of the spin axis, in (0, 1]: `tan a' = k tan a`
+  // (docs/impact.md §0.8); 1 (the presets' and defaults') is the impact's own axis.
+  double spin_axis_share;
 } CarryClub_f64;
 
 // A club head in double precision.

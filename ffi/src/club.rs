@@ -50,6 +50,9 @@ pub struct CarryClub<T> {
     pub restitution_speed_slope_spm: T,
     /// Compliant contact: ceiling of the tangential restitution, in [0, 1] (1: none).
     pub tangential_restitution_max: T,
+    /// The empirical D-plane share of the spin axis, in (0, 1]: `tan a' = k tan a`
+    /// (docs/impact.md §0.8); 1 (the presets' and defaults') is the impact's own axis.
+    pub spin_axis_share: T,
 }
 
 /// A ball (SI units).
@@ -94,6 +97,7 @@ impl<T: Real> CarryClub<T> {
             tangential_restitution_slope: c.tangential_restitution_slope,
             restitution_speed_slope_spm: c.restitution_speed_slope_spm,
             tangential_restitution_max: c.tangential_restitution_max,
+            spin_axis_share: s.spin_axis_share,
         }
     }
 
@@ -125,6 +129,7 @@ impl<T: Real> CarryClub<T> {
             cg_to_face_m: Vector3::from(self.cg_to_face_m),
             restitution: self.restitution,
             contact,
+            spin_axis_share: self.spin_axis_share,
         })
     }
 }

@@ -584,3 +584,57 @@ fn delivery_convention_is_selectable() {
         carry_ffi::error::CarryError::CARRY_ERR_UNKNOWN_OPTION
     );
 }
+
+/// Issue 34: the club's empirical spin-axis share crosses the C API (`CarryClub::
+/// spin_axis_share`): the defaults and presets hold 1; 0.5 gives the core's impact with the
+/// same share (bit for bit) and halves the axis tangent; 0 or NaN is an invalid input.
+#[test]
+fn spin_axis_share_crosses_the_c_api() {
+    fn check<T: Api>() {
+        let mut input = zeroed::<CarryShotInput<T>>();
+        assert_eq!(T::shot_default(&mut input), CARRY_OK);
+        assert_eq!(input.club.spin_axis_share, T::one());
+        input.delivery.face_angle_rad = carry_core::real::lit(0.05);
+        let mut physics = zeroed::<CarryShotResult<T>>();
+        let mut n = 0;
+        assert_eq!(T::shot(&input, &mut [], &mut n, &mut physics), CARRY_OK);
+        input.club.spin_axis_share = carry_core::real::lit(0.5);
+        let mut shared = zeroed::<CarryShotResult<T>>();
+        assert_eq!(T::shot(&input, &mut [], &mut n, &mut shared), CARRY_OK);
+        let Ok(club) = input.club.spec().and_then(|s| Ok(s.validate()?)) else {
+            panic!("club")
+        };
+        let Ok(strike) = input.delivery.delivery().strike(&club) else {
+            panic!("strike")
+        };
+        let Ok(core) = carry_core::impact::solve(
+            &club,
+            &Ball::standard(),
+            &strike,
+            carry_core::impact::Solver::Reduced,
+        ) else {
+            panic!("impact")
+        };
+        assert_eq!(shared.impact, CarryImpactResult::from_outcome(&core));
+        let tan = |r: &CarryShotResult<T>| carry_core::real::to_f64(r.impact.spin_axis_rad).tan();
+        assert!(tan(&physics).abs() > 0.05);
+        assert!((tan(&shared) - 0.5 * tan(&physics)).abs() < 1e-5);
+        assert_eq!(shared.impact.ball_speed_mps, physics.impact.ball_speed_mps);
+        for bad in [0.0, f64::NAN, 1.5] {
+            input.club.spin_axis_share = carry_core::real::lit(bad);
+            assert_eq!(
+                T::shot(&input, &mut [], &mut n, &mut shared),
+                CARRY_ERR_INVALID_INPUT,
+                "{bad}"
+            );
+        }
+    }
+    check::<f32>();
+    check::<f64>();
+    let mut c = zeroed::<CarryClubF64>();
+    for k in 0..carry_club_preset_count() {
+        // SAFETY: valid pointers.
+        assert_eq!(unsafe { carry_club_preset_index_f64(k, &mut c) }, CARRY_OK);
+        assert_eq!(c.spin_axis_share, 1.0);
+    }
+}

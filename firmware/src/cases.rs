@@ -176,6 +176,7 @@ impl ImpactInput {
             cg_to_face_m: v3(self.cg_to_face_m),
             restitution: lit(self.cor),
             contact: ContactLaw::Rolling,
+            spin_axis_share: T::one(),
         }
     }
 

@@ -41,6 +41,7 @@ pub fn driver<T: Real>() -> ClubSpec<T> {
         cg_to_face_m: Vector3::new(lit(0.04), T::zero(), T::zero()),
         restitution: lit(0.83),
         contact: ContactLaw::Rolling,
+        spin_axis_share: T::one(),
     }
 }
 

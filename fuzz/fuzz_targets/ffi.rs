@@ -68,6 +68,7 @@ fn mutate_club<T: Real>(b: &mut Bytes<'_>, c: &mut CarryClub<T>) {
         c.tangential_restitution_slope = f(b, -5.0, 5.0);
         c.restitution_speed_slope_spm = f(b, -0.01, 0.05);
         c.tangential_restitution_max = f(b, -0.1, 1.1);
+        c.spin_axis_share = f(b, -0.1, 1.1);
     }
     c.contact = selector(b, 2);
 }

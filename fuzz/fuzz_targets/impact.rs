@@ -58,6 +58,13 @@ fn run<T: Real>(b: &mut Bytes<'_>) -> Result<()> {
                 tangential_restitution_max: lit(b.param(-0.1, 1.1)),
             })
         },
+        // the empirical spin-axis share: mostly the physics' 1, else any value around
+        // (0, 1], out-of-range ones included (validation must name them)
+        spin_axis_share: if b.flag() {
+            lit(b.param(-0.1, 1.1))
+        } else {
+            T::one()
+        },
     };
     if let ContactLaw::Compliant(law) = spec.contact {
         // the law's impulse on its own, with an arbitrary (usually not SPD) matrix and

@@ -102,6 +102,11 @@ pub struct ClubArgs {
     /// The full solver supports only `rolling`.
     #[arg(long, value_name = "NAME|FILE.toml", value_parser = contact)]
     pub contact: Option<ContactLaw<f64>>,
+    /// Empirical D-plane share k of the spin axis, in (0, 1]: the launch's axis tangent
+    /// scaled, tan a' = k·tan a (default 1: the impact's own axis). A named empirical law
+    /// beside the physics (docs/impact.md §0.8: 0.3–0.5 fitted on an amateur's TrackMan drives).
+    #[arg(long, value_name = "K", value_parser = finite, allow_hyphen_values = true)]
+    pub spin_axis_share: Option<f64>,
     /// Club head mass [kg].
     #[arg(long, value_name = "KG", value_parser = finite, allow_hyphen_values = true)]
     pub club_mass: Option<f64>,
@@ -378,6 +383,7 @@ impl ClubArgs {
         if let Some(preset) = self.club {
             Key::Club.set(p, u, Value::Preset(preset));
         }
+        put(p, u, Key::SpinAxisShare, self.spin_axis_share);
         put(p, u, Key::ClubMass, self.club_mass);
         if let Some(t) = self.club_inertia {
             Key::ClubInertia.set(p, u, Value::Tensor(t));

@@ -203,3 +203,41 @@ fn fit_compliant_family_evaluates_the_default() {
     assert_eq!(code, 2);
     assert!(err.starts_with("carry: --evaluate"), "{err}");
 }
+
+/// Issue 34: `--spin-axis-share K` scales the launch's spin-axis tangent by K and leaves
+/// ball speed, launch and total spin alone (the empirical D-plane share, an option beside
+/// the physics: the default is the impact's own axis); in a batch it is a column; a share
+/// outside (0, 1] is one line naming the option, status 2.
+#[test]
+fn spin_axis_share_scales_the_axis_only() {
+    let args = ["impact", "--json", "--face-angle", "3", "--club-path", "-1"];
+    let physics = json(&args);
+    let same = json(&[&args[..], &["--spin-axis-share", "1"]].concat());
+    assert_eq!(physics["launch"], same["launch"]);
+    let half = json(&[&args[..], &["--spin-axis-share", "0.5"]].concat());
+    for key in ["ball_speed_mps", "launch_angle_deg", "launch_direction_deg"] {
+        assert_eq!(launch(&half, key), launch(&physics, key), "{key}");
+    }
+    assert!((launch(&half, "spin_rpm") / launch(&physics, "spin_rpm") - 1.0).abs() < 1e-12);
+    let tan = |v: &Value| launch(v, "spin_axis_deg").to_radians().tan();
+    assert!(tan(&physics).abs() > 0.1, "{}", tan(&physics));
+    assert!((tan(&half) - 0.5 * tan(&physics)).abs() < 1e-9);
+    let csv = temp_file(
+        "share.csv",
+        "face_angle,club_path,spin_axis_share\n3,-1,1\n3,-1,0.5\n3,-1,0\n",
+    );
+    let Run { code, stdout, .. } = run(&["batch", "impact", "--input", &csv.display().to_string()]);
+    assert_eq!(code, 0);
+    let lines: Vec<&str> = stdout.lines().collect();
+    assert_eq!(lines.len(), 4, "{stdout}");
+    assert!(lines[3].contains("spin_axis_share"), "{}", lines[3]);
+    for bad in ["0", "1.01", "-0.2", "nan"] {
+        let Run { code, stderr, .. } = run(&["impact", "--spin-axis-share", bad]);
+        assert_eq!(code, 2, "{bad}: {stderr}");
+        assert!(
+            stderr.starts_with("carry: --spin-axis-share"),
+            "{bad}: {stderr}"
+        );
+        assert_eq!(stderr.trim().lines().count(), 1);
+    }
+}

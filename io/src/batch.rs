@@ -52,9 +52,9 @@ pub fn applies(mode: Mode, key: Key) -> bool {
     match key {
         BallMass | BallRadius => true,
         ClubSpeed | AttackAngle | ClubPath | FaceAngle | DynamicLoft | Lie | ClubSpin
-        | ClubSpinX | ClubSpinY | ClubSpinZ | ImpactHeight | ImpactToe | Cor | Convention
-        | Club | Contact | ClubMass | ClubInertia | Loft | Bulge | Roll | FaceDepthRadius
-        | CgToFace | CgToFaceX | CgToFaceY | CgToFaceZ => mode != Mode::Flight,
+        | ClubSpinX | ClubSpinY | ClubSpinZ | ImpactHeight | ImpactToe | Cor | SpinAxisShare
+        | Convention | Club | Contact | ClubMass | ClubInertia | Loft | Bulge | Roll
+        | FaceDepthRadius | CgToFace | CgToFaceX | CgToFaceY | CgToFaceZ => mode != Mode::Flight,
         BallSpeed | LaunchAngle | LaunchDirection | Backspin | Sidespin | Spin | SpinAxis => {
             mode == Mode::Flight
         }

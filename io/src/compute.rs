@@ -189,6 +189,9 @@ pub fn club_spec<T: Real>(c: &ClubParams) -> ClubSpec<T> {
     if let Some(e) = c.cor {
         spec.restitution = lit(e);
     }
+    if let Some(k) = c.spin_axis_share {
+        spec.spin_axis_share = lit(k);
+    }
     if let Some(law) = c.contact {
         spec.contact = law.cast();
     }

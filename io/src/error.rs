@@ -117,6 +117,7 @@ pub fn field_key(field: Field) -> &'static str {
         Field::Stimp => "stimp",
         Field::GroundNormal => "ground_slope",
         Field::ContactLaw => "contact, solver",
+        Field::SpinAxisShare => "spin_axis_share",
         Field::Friction
         | Field::TangentialRestitution
         | Field::TangentialRestitutionSlope
@@ -178,6 +179,7 @@ impl From<Error> for InputError {
                         format!("{reason} ({} to {hi} m)", Minus(lo))
                     }
                     Field::Restitution | Field::GroundRestitution => format!("{reason} (0 to 1)"),
+                    Field::SpinAxisShare => format!("{reason} (above 0, at most 1)"),
                     Field::Stimp => {
                         let (lo, hi) = STIMP_RANGE_M;
                         format!("{reason} ({} to {} ft)", feet(lo), feet(hi))

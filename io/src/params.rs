@@ -33,6 +33,8 @@ pub struct ClubParams {
     pub cg_to_face_m: Option<[f64; 3]>,
     /// Coefficient of restitution.
     pub cor: Option<f64>,
+    /// The empirical D-plane share of the spin axis, in (0, 1]; `None`: the physics (1).
+    pub spin_axis_share: Option<f64>,
     /// Contact law; `None`: the preset's (the fitted compliant contact).
     pub contact: Option<ContactLaw<f64>>,
     /// The user named the preset: unspecified attack angle, dynamic loft and impact height
@@ -172,6 +174,7 @@ impl Default for Params {
                 face_depth_radius_m: None,
                 cg_to_face_m: None,
                 cor: None,
+                spin_axis_share: None,
                 contact: None,
                 named: false,
             },
@@ -279,6 +282,7 @@ keys! {
     ImpactHeight = "impact_height", Number, Offset;
     ImpactToe = "impact_toe", Number, Offset;
     Cor = "cor", Number, Plain;
+    SpinAxisShare = "spin_axis_share", Number, Plain;
     Convention = "convention", Convention, Plain;
     Club = "club", Preset, Plain;
     Contact = "contact", Contact, Plain;
@@ -434,6 +438,7 @@ impl Key {
                     Key::ImpactHeight => d.impact_height_m = Some(x),
                     Key::ImpactToe => d.impact_toe_m = x,
                     Key::Cor => c.cor = Some(x),
+                    Key::SpinAxisShare => c.spin_axis_share = Some(x),
                     Key::ClubMass => c.mass_kg = Some(x),
                     Key::Loft => c.loft_deg = Some(x),
                     Key::Bulge => c.bulge_m = Some(x),

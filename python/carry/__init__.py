@@ -224,7 +224,7 @@ def impact(*, raise_on_error: bool = False, **kwargs: _Any) -> _Dict[str, _np.nd
 
     Arguments: delivery (``club_speed``, ``attack_angle``, ``club_path``, ``face_angle``,
     ``dynamic_loft``, ``lie``, ``club_spin`` or ``club_spin_x/_y/_z``, ``impact_height``,
-    ``impact_toe``), club (``club`` preset, ``contact``, ``club_mass``, ``loft``, ``cor``,
+    ``impact_toe``), club (``club`` preset, ``contact``, ``spin_axis_share``, ``club_mass``, ``loft``, ``cor``,
     …), ball (``ball_mass``, ``ball_radius``), ``solver``, ``precision``, ``units``.
     Returns the launch (``ball_speed_mps``, ``launch_angle_deg``, ``spin_rpm``,
     ``smash_factor``, …), the club after impact and the impulse.

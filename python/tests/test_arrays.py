@@ -136,3 +136,17 @@ def test_empty_arrays_give_empty_results():
     r = carry.flight(ball_speed=np.zeros((0, 3)))
     assert r["carry_m"].shape == (0, 3)
     assert r["errors"].shape == (0, 3)
+
+
+def test_spin_axis_share_scales_the_axis_per_row():
+    """Issue 34's empirical D-plane share as a per-row number: the axis tangent scales,
+    ball speed and total spin do not; a share outside (0, 1] is that row's error."""
+    out = carry.impact(face_angle=3, club_path=-1, spin_axis_share=[1.0, 0.5, 0.0])
+    tan = np.tan(np.radians(out["spin_axis_deg"]))
+    assert abs(tan[0]) > 0.1
+    assert tan[1] == pytest.approx(0.5 * tan[0], rel=1e-9)
+    assert out["ball_speed_mps"][1] == out["ball_speed_mps"][0]
+    assert out["spin_rpm"][1] == pytest.approx(out["spin_rpm"][0], rel=1e-12)
+    assert out["errors"][0] is None and out["errors"][1] is None
+    assert "spin_axis_share" in out["errors"][2]
+    assert np.isnan(out["spin_axis_deg"][2])

@@ -53,6 +53,7 @@ impl Scenario {
             cg_to_face_m: Vector3::new(lit(cg[0]), lit(cg[1]), lit(cg[2])),
             restitution: lit(self.restitution),
             contact: self.contact.cast(),
+            spin_axis_share: T::one(),
         }
     }
 

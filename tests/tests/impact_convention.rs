@@ -28,6 +28,7 @@ fn club<T: Real>(loft_deg: f64, roll_m: f64, bulge_m: f64) -> ClubHead<T> {
         cg_to_face_m: spec.cg_to_face_m.map(lit),
         restitution: lit(spec.restitution),
         contact: spec.contact.cast(),
+        spin_axis_share: lit(spec.spin_axis_share),
     };
     let Ok(head) = spec.validate() else {
         panic!("club")

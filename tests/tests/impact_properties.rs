@@ -129,6 +129,47 @@ fn check_solvers_agree<T: Real>(s: &Scenario, tol: f64) -> Result<(), TestCaseEr
     Ok(())
 }
 
+/// The empirical spin-axis share (issue 34, `ClubSpec::spin_axis_share`) changes only the
+/// spin axis: the same ball velocity bit for bit, the same spin magnitude, the axis'
+/// tangent scaled by `k` (and never larger), whatever the club and delivery.
+fn check_axis_share<T: Real>(s: &Scenario, k: f64, tol: f64) -> Result<(), TestCaseError> {
+    let spec = s.club_spec::<T>();
+    let shared = ClubSpec {
+        spin_axis_share: lit(k),
+        ..spec
+    };
+    let (Ok(physics), Ok(club)) = (spec.validate(), shared.validate()) else {
+        return Err(TestCaseError::reject("invalid"));
+    };
+    let Ok(strike) = s.delivery::<T>().strike(&physics) else {
+        return Err(TestCaseError::reject("no strike"));
+    };
+    let ball = Ball::standard();
+    let (Ok(a), Ok(b)) = (
+        impact::solve(&physics, &ball, &strike, Solver::Reduced),
+        impact::solve(&club, &ball, &strike, Solver::Reduced),
+    ) else {
+        return Err(TestCaseError::reject("no impact"));
+    };
+    prop_assert_eq!(a.ball.velocity_mps, b.ball.velocity_mps);
+    prop_assert_eq!(a.launch.ball_speed_mps, b.launch.ball_speed_mps);
+    let (la, lb) = (a.launch, b.launch);
+    let spin = to_f64(la.spin_radps);
+    prop_assert!((to_f64(lb.spin_radps) - spin).abs() <= tol * (1.0 + spin));
+    let (ta, tb) = (
+        to_f64(la.spin_axis_rad).tan(),
+        to_f64(lb.spin_axis_rad).tan(),
+    );
+    if to_f64(la.backspin_radps) > 1.0 && ta.abs() < 50.0 {
+        prop_assert!(
+            (tb - k * ta).abs() <= tol * 100.0 * (1.0 + ta.abs()),
+            "tan axis {tb} against k·{ta}"
+        );
+        prop_assert!(to_f64(lb.spin_axis_rad).abs() <= to_f64(la.spin_axis_rad).abs() + tol);
+    }
+    Ok(())
+}
+
 proptest! {
     #![proptest_config(ProptestConfig { cases: 512, max_global_rejects: 100_000, ..ProptestConfig::default() })]
 
@@ -148,6 +189,12 @@ proptest! {
     fn energy_never_increases_with_preset_clubs(s in preset_scenario()) {
         check_energy::<f64>(&s, CONSERVE_F64)?;
         check_energy::<f32>(&s, CONSERVE_F32)?;
+    }
+
+    #[test]
+    fn spin_axis_share_changes_only_the_axis(s in preset_scenario(), k in 0.05..=1.0_f64) {
+        check_axis_share::<f64>(&s, k, 1e-12)?;
+        check_axis_share::<f32>(&s, k, 2e-5)?;
     }
 
     #[test]
@@ -276,5 +323,40 @@ fn heavy_club_is_a_rigid_wall() {
                 "{solver:?} {scale}"
             );
         }
+    }
+}
+
+/// A spin-axis share outside (0, 1] (or NaN) is an invalid input naming it, in both
+/// precisions; the presets and the defaults hold the physics' 1.
+#[test]
+fn spin_axis_share_outside_its_range_is_rejected() {
+    fn check<T: Real>() {
+        let spec = ClubSpec::<T>::driver();
+        assert_eq!(spec.spin_axis_share, T::one());
+        for k in [0.0, -0.5, 1.0 + 1e-3, f64::NAN, f64::INFINITY] {
+            let bad = ClubSpec {
+                spin_axis_share: lit(k),
+                ..spec
+            };
+            match bad.validate() {
+                Err(Error::InvalidInput { field, .. }) => {
+                    assert_eq!(field, carry_core::Field::SpinAxisShare, "{k}");
+                }
+                other => panic!("{k}: {other:?}"),
+            }
+        }
+        assert!(
+            ClubSpec {
+                spin_axis_share: lit(1e-3),
+                ..spec
+            }
+            .validate()
+            .is_ok()
+        );
+    }
+    check::<f64>();
+    check::<f32>();
+    for p in carry_core::PRESETS {
+        assert_eq!(p.spec::<f64>().spin_axis_share, 1.0, "{}", p.name);
     }
 }

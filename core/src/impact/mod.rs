@@ -24,6 +24,7 @@
 //! their three-dimensional club–ball impact.
 
 pub use crate::contact_law;
+pub mod axis_share;
 pub mod full;
 pub mod reduced;
 
@@ -199,6 +200,8 @@ pub fn solve<T: Real>(
     {
         return Err(Error::Singular);
     }
+    // the empirical D-plane share, when the club asks for one (1: nothing is computed)
+    let ball_after = axis_share::apply(club.spin_axis_share(), &ball_after);
     let launch = LaunchMetrics::from_motion(&ball_after, strike.club_speed_mps());
     // Finite components can still overflow a norm (inputs near the precision's largest
     // value; found by fuzzing, issue 7): out of range for the precision, never ±∞ out.

@@ -282,6 +282,7 @@ impl Shot {
                     cg_to_face_m: v3(&club.cg_to_face_m),
                     restitution: lit(club.restitution),
                     contact: club.contact.cast(),
+                    spin_axis_share: lit(club.spin_axis_share),
                 };
                 let delivery = Delivery::<T> {
                     club_speed_mps: lit(d.club_speed_mps),

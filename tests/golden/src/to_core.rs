@@ -28,6 +28,7 @@ impl Club {
             cg_to_face_m: v3(self.cg_to_face_m),
             restitution: lit(cor),
             contact: ContactLaw::Rolling,
+            spin_axis_share: T::one(),
         }
     }
 }
