@@ -256,6 +256,14 @@ impl<T: Real> ClubHead<T> {
     pub fn spin_axis_share(&self) -> T {
         self.spin_axis_share
     }
+    /// The same club with the physics' spin axis (share 1).
+    #[must_use]
+    pub(crate) fn with_physics_axis(&self) -> Self {
+        Self {
+            spin_axis_share: T::one(),
+            ..*self
+        }
+    }
 }
 
 #[cfg(test)]

@@ -1,6 +1,7 @@
 //! On-target estimates of club data from ball data (issue 23), run on QEMU by `cargo test
 //! --release`: every case of `carry_firmware::estimate_cases`, in f32 and f64, bit for
-//! bit against the host's result (computed by `build.rs` from the same source).
+//! bit against the host's result (computed by `build.rs` from the same source), with the
+//! peak stack of each estimate (painted) within a bound the micro:bit's RAM holds.
 //!
 //! Its own image, apart from `golden.rs`: the micro:bit's 256 KiB of flash hold the
 //! estimator in software f32 and f64, or the rest of the suite, not both.
@@ -20,7 +21,17 @@ fn estimate_bit_identity<T: Precision>(
     let mut differ = 0u32;
     for (case, h) in ESTIMATE_CASES.iter().zip(ESTIMATE) {
         defmt::assert_eq!(case.name, h.name);
-        let target = case.outputs::<T>();
+        let (target, stack) = carry_firmware::stack::measure(|| case.outputs::<T>());
+        defmt::info!(
+            "estimate {=str} {=str}: peak stack {=usize} B",
+            T::NAME,
+            case.name,
+            stack
+        );
+        // The micro:bit has 16 KiB of RAM for everything: f32 6.8 KiB, f64 12.8 KiB at
+        // this commit (docs/firmware.md). A guard against a regression that would
+        // overflow it, which faults (a lockup on QEMU) rather than failing a test.
+        defmt::assert!(stack < 1800 * core::mem::size_of::<T>());
         if !identical(case.name, "default", &ESTIMATE_NAMES, &target, host(h)) {
             differ += 1;
         }

@@ -23,6 +23,13 @@
 //! default, along the strike height's valley the profile posterior replaces it (the
 //! cost minimised with the height held, probed either side of the MAP, summarised as a
 //! split normal: [`valley`]), and the value is the posterior mean (docs/estimate.md §1).
+//!
+//! Stack: on soft-float MCUs (the micro:bit's Cortex-M0: 16 KiB of RAM in all) the loop,
+//! the posterior and the valley keep their matrix algebra in out-of-line steps, so that
+//! the frames under each forward evaluation hold only the state (`cfg_attr(…,
+//! inline(never))` below; the f64 estimate's peak is 12.8 KiB there, measured by the
+//! on-target suite). Hardware-float targets and hosts inline as the compiler chooses: the
+//! same operations in the same order, so the results are bit for bit the same.
 
 use super::model::{Model, SPEED, Unknowns};
 use super::spd::Cholesky;
@@ -201,6 +208,7 @@ const CLUB_DATA: [Option<Datum>; 7] = [
 /// terms `z` of the ball data (the normalised residuals `r`), of the measured club data and
 /// of the prior, their sum of squares against the χ² bound of as many degrees of freedom
 /// as data, and the largest measured `|z|` against `max_shift_sd`.
+#[cfg_attr(all(target_os = "none", not(target_abi = "eabihf")), inline(never))]
 fn consistency<T: Real>(
     r: &SVector<T, 5>,
     x: &V7<T>,
@@ -260,6 +268,7 @@ fn consistency<T: Real>(
 /// A good start: the centre `m`, moved so that its launch matches the measured one to
 /// first order (face by the launch direction, loft by the launch angle, speed by the ball
 /// speed) where the device did not measure that datum. One forward evaluation.
+#[cfg_attr(all(target_os = "none", not(target_abi = "eabihf")), inline(never))]
 fn start<T: Real>(
     problem: &Problem<'_, T>,
     measured: &BallData<T>,
@@ -303,6 +312,12 @@ struct Solution<T: Real> {
 
 /// The Levenberg–Marquardt loop: the solution, its normal matrix `A`, the Jacobian of the
 /// normalised residuals and the prediction at the solution.
+///
+/// Its matrix algebra runs in small out-of-line steps ([`normal_equations`],
+/// [`damped_step`], [`broyden_update`], ...): this frame, which sits under every forward
+/// evaluation, holds only the iteration's state (the micro:bit's f64 estimate has 16 KiB
+/// of stack for all of it; docs/firmware.md).
+#[cfg_attr(all(target_os = "none", not(target_abi = "eabihf")), inline(never))]
 fn iterate<T: Real>(
     problem: &Problem<'_, T>,
     start: V7<T>,
@@ -315,7 +330,6 @@ fn iterate<T: Real>(
     let mut r = problem.residual(&f);
     let mut cost = problem.cost(&r, &x);
     let mut lambda = lit::<T>(LAMBDA_START);
-    let q = M7::from_diagonal(&problem.q);
     // the secant estimate S of the residuals' own curvature Σ r_k ∇²r_k, and the previous
     // iteration's Jacobian, gradient and step it is updated from
     let mut secant = M7::<T>::zeros();
@@ -324,29 +338,24 @@ fn iterate<T: Real>(
     // tell that the iteration has converged (and for the covariance), saving the seven
     // forward evaluations of a fresh Jacobian at the end
     let mut broyden: Option<Jacobian<T>> = None;
-    let weight = V7::from(UNIT.map(|u| T::one() / lit::<T>(u * u)));
     for iteration in 1..=max_iterations {
-        if let Some(jb) = broyden.take() {
-            let jt = jb.transpose();
-            let a = jt * jb + q;
-            let g = jt * r + problem.q.component_mul(&(x - problem.m));
+        if let Some(jac) = broyden.take() {
+            let (a, g) = normal_equations(problem, &jac, &r, &x);
             let (_, newton) = newton_step(&a, &mut secant, &g)?;
             if -g.dot(&newton) <= tolerance * tolerance {
                 return Ok(Solution {
                     x,
                     a,
-                    jac: jb,
+                    jac,
                     f,
                     iterations: iteration,
                 });
             }
         }
         let jac = jacobian(problem, &x, &r, &unit, None)?;
-        let jt = jac.transpose();
-        let a = jt * jac + q;
-        let g = jt * r + problem.q.component_mul(&(x - problem.m));
-        if let Some((jp, gp, s)) = previous {
-            update_secant(&mut secant, &s, &(g - gp), &((jac - jp).transpose() * r));
+        let (a, g) = normal_equations(problem, &jac, &r, &x);
+        if let Some((jp, gp, s)) = &previous {
+            update_secant(&mut secant, s, &(g - gp), &jac, jp, &r);
         }
         let (model, newton) = newton_step(&a, &mut secant, &g)?;
         // converged when the Newton step is below `tolerance` posterior σ: its Mahalanobis
@@ -360,26 +369,14 @@ fn iterate<T: Real>(
                 iterations: iteration,
             });
         }
-        let mut accepted = None;
-        for _ in 0..MAX_REJECTS {
-            let damped = model + M7::from_diagonal(&(a.diagonal() * lambda));
-            let Ok(step) = solve_spd(&damped, &(-g)) else {
-                lambda *= lit(LAMBDA_GROWTH);
-                continue;
-            };
-            let next = x + step;
-            if let Ok(fn_) = problem.predict(&next) {
-                let rn = problem.residual(&fn_);
-                let cn = problem.cost(&rn, &next);
-                if cn <= cost {
-                    accepted = Some((step, next, fn_, rn, cn));
-                    lambda = crate::real::larger(lambda / lit(LAMBDA_GROWTH), lit(LAMBDA_MIN));
-                    break;
-                }
-            }
-            lambda *= lit(LAMBDA_GROWTH);
-        }
-        let Some((step, mut next, mut fn_, mut rn, mut cn)) = accepted else {
+        let Some(Trial {
+            step,
+            mut next,
+            f: mut fn_,
+            r: mut rn,
+            cost: mut cn,
+        }) = damped_step(problem, &model, &a, &g, &x, cost, &mut lambda)
+        else {
             // no damping lowers the cost: stationary to the precision
             return Ok(Solution {
                 x,
@@ -410,14 +407,7 @@ fn iterate<T: Real>(
             }
         }
         let step = next - x;
-        let scaled = step.component_mul(&weight);
-        let norm = step.dot(&scaled);
-        if norm > T::zero() {
-            let update = (rn - r - jac * step) * (scaled.transpose() / norm);
-            if update.iter().all(|v| v.is_finite()) {
-                broyden = Some(jac + update);
-            }
-        }
+        broyden = broyden_update(&jac, &r, &rn, &step);
         previous = Some((jac, g, step));
         x = next;
         f = fn_;
@@ -427,8 +417,92 @@ fn iterate<T: Real>(
     Err(Error::NoConvergence)
 }
 
+/// The normal equations of the normalised residuals `r` with Jacobian `J` at `x`: `A =
+/// JᵀJ + Q` and the (half) gradient `g = Jᵀr + Q(x − m)`.
+#[cfg_attr(all(target_os = "none", not(target_abi = "eabihf")), inline(never))]
+fn normal_equations<T: Real>(
+    problem: &Problem<'_, T>,
+    jac: &Jacobian<T>,
+    r: &SVector<T, 5>,
+    x: &V7<T>,
+) -> (M7<T>, V7<T>) {
+    let jt = jac.transpose();
+    let a = jt * jac + M7::from_diagonal(&problem.q);
+    let g = jt * r + problem.q.component_mul(&(x - problem.m));
+    (a, g)
+}
+
+/// An accepted Levenberg–Marquardt step: the step, the new point, its prediction,
+/// residuals and cost.
+struct Trial<T: Real> {
+    step: V7<T>,
+    next: V7<T>,
+    f: BallData<T>,
+    r: SVector<T, 5>,
+    cost: T,
+}
+
+/// The first of up to `MAX_REJECTS` damped steps `(M + λ diag A) δ = −g` from `x` that
+/// lowers `cost` (λ grown tenfold per rejection, shrunk tenfold on acceptance), or `None`.
+#[cfg_attr(all(target_os = "none", not(target_abi = "eabihf")), inline(never))]
+fn damped_step<T: Real>(
+    problem: &Problem<'_, T>,
+    model: &M7<T>,
+    a: &M7<T>,
+    g: &V7<T>,
+    x: &V7<T>,
+    cost: T,
+    lambda: &mut T,
+) -> Option<Trial<T>> {
+    for _ in 0..MAX_REJECTS {
+        let damped = model + M7::from_diagonal(&(a.diagonal() * *lambda));
+        let Ok(step) = solve_spd(&damped, &(-g)) else {
+            *lambda *= lit(LAMBDA_GROWTH);
+            continue;
+        };
+        let next = x + step;
+        if let Ok(f) = problem.predict(&next) {
+            let r = problem.residual(&f);
+            let cn = problem.cost(&r, &next);
+            if cn <= cost {
+                *lambda = crate::real::larger(*lambda / lit(LAMBDA_GROWTH), lit(LAMBDA_MIN));
+                return Some(Trial {
+                    step,
+                    next,
+                    f,
+                    r,
+                    cost: cn,
+                });
+            }
+        }
+        *lambda *= lit(LAMBDA_GROWTH);
+    }
+    None
+}
+
+/// Broyden's rank-one update of the Jacobian `J` along the step `s` (residuals `r` → `rₙ`),
+/// in the unknowns' scaled norm: `J + (rₙ − r − J s) (W s)ᵀ / (sᵀ W s)`, `W = diag(1/u²)`;
+/// `None` for a zero step or a non-finite update.
+#[cfg_attr(all(target_os = "none", not(target_abi = "eabihf")), inline(never))]
+fn broyden_update<T: Real>(
+    jac: &Jacobian<T>,
+    r: &SVector<T, 5>,
+    rn: &SVector<T, 5>,
+    step: &V7<T>,
+) -> Option<Jacobian<T>> {
+    let weight = V7::from(UNIT.map(|u| T::one() / lit::<T>(u * u)));
+    let scaled = step.component_mul(&weight);
+    let norm = step.dot(&scaled);
+    if !(norm > T::zero()) {
+        return None;
+    }
+    let update = (rn - r - jac * step) * (scaled.transpose() / norm);
+    update.iter().all(|v| v.is_finite()).then(|| jac + update)
+}
+
 /// The Newton step of the model Hessian: Gauss–Newton's `a` plus the secant term where
 /// that keeps the step a descent direction (else the secant term is dropped).
+#[cfg_attr(all(target_os = "none", not(target_abi = "eabihf")), inline(never))]
 fn newton_step<T: Real>(a: &M7<T>, secant: &mut M7<T>, g: &V7<T>) -> Result<(M7<T>, V7<T>)> {
     let model = a + *secant;
     match solve_spd(&model, &(-g)) {
@@ -445,7 +519,16 @@ fn newton_step<T: Real>(a: &M7<T>, secant: &mut M7<T>, g: &V7<T>) -> Result<(M7<
 /// Welsch, ACM TOMS 7, 1981), with its sizing: for the step `s`, the change `y` of the
 /// (half) gradient and `y# = (J₊ − J)ᵀ r₊`, `S ← τS` with `τ = min(1, |sᵀy#| / |sᵀSs|)`,
 /// then `S₊ = S + (w yᵀ + y wᵀ)/yᵀs − (wᵀs) y yᵀ/(yᵀs)²`, `w = y# − S s`.
-fn update_secant<T: Real>(secant: &mut M7<T>, s: &V7<T>, y: &V7<T>, ysharp: &V7<T>) {
+#[cfg_attr(all(target_os = "none", not(target_abi = "eabihf")), inline(never))]
+fn update_secant<T: Real>(
+    secant: &mut M7<T>,
+    s: &V7<T>,
+    y: &V7<T>,
+    jac: &Jacobian<T>,
+    previous_jac: &Jacobian<T>,
+    r: &SVector<T, 5>,
+) {
+    let ysharp = &((jac - previous_jac).transpose() * r);
     let sss = s.dot(&(*secant * s));
     let ssy = s.dot(ysharp).abs();
     if sss.abs() > ssy {
@@ -515,6 +598,7 @@ const HEIGHT: usize = 5;
 ///
 /// # Errors
 /// [`Error::IllPosed`] when `A` is not positive definite in the precision.
+#[cfg_attr(all(target_os = "none", not(target_abi = "eabihf")), inline(never))]
 fn inverse<T: Real>(a: &M7<T>) -> Result<M7<T>> {
     Cholesky::factor(a)
         .and_then(|c| c.inverse())
@@ -530,17 +614,15 @@ fn solve_spd<T: Real>(a: &M7<T>, b: &V7<T>) -> Result<V7<T>> {
 /// `x0` (its height held), by `RELAX` Gauss–Newton steps on fresh forward-difference
 /// Jacobians (six columns: the height's is not needed), each step kept only if it lowers
 /// the cost. The point and its cost.
+#[cfg_attr(all(target_os = "none", not(target_abi = "eabihf")), inline(never))]
 fn relax<T: Real>(problem: &Problem<'_, T>, x0: V7<T>) -> Option<(V7<T>, T)> {
     let unit = units::<T>();
-    let q = M7::from_diagonal(&problem.q);
     let mut x = x0;
     let mut r = problem.residual(&problem.predict(&x).ok()?);
     let mut cost = problem.cost(&r, &x);
     for _ in 0..RELAX {
         let jac = jacobian(problem, &x, &r, &unit, Some(HEIGHT)).ok()?;
-        let jt = jac.transpose();
-        let mut a = jt * jac + q;
-        let mut g = jt * r + problem.q.component_mul(&(x - problem.m));
+        let (mut a, mut g) = normal_equations(problem, &jac, &r, &x);
         // the height held: its row and column of the normal equations replaced by δh = 0
         a.row_mut(HEIGHT).fill(T::zero());
         a.column_mut(HEIGHT).fill(T::zero());
@@ -570,6 +652,7 @@ fn relax<T: Real>(problem: &Problem<'_, T>, x0: V7<T>) -> Option<(V7<T>, T)> {
 /// The posterior along the valley of the strike height: mean shift and covariance of the
 /// delivery, from the profile cost (the cost minimised with the height held) probed on
 /// either side of the MAP.
+#[cfg_attr(all(target_os = "none", not(target_abi = "eabihf")), inline(never))]
 fn valley<T: Real>(
     problem: &Problem<'_, T>,
     x: &V7<T>,
@@ -618,6 +701,14 @@ fn valley<T: Real>(
             start = d;
         }
     }
+    Some(split_normal(sides, &s, cov))
+}
+
+/// The valley's posterior from its two sides' widths σ± and directions d± (per Laplace σ
+/// along the height's conditional direction `s`) and the Laplace covariance: mean shift
+/// and covariance, with the covariance along `s` replaced by the split normal's.
+#[cfg_attr(all(target_os = "none", not(target_abi = "eabihf")), inline(never))]
+fn split_normal<T: Real>(sides: [(T, V7<T>); 2], s: &V7<T>, cov: &M7<T>) -> (V7<T>, M7<T>) {
     let [(up, du), (down, dd)] = sides;
     // split normal: p(t) ∝ exp(−t²/2σ±²) for t ≷ 0, a = √(2/π)/(σ₊ + σ₋);
     // E[t; t>0] = a σ₊², E[t; t<0] = −a σ₋², E[t²; t≷0] = σ±³/(σ₊ + σ₋)
@@ -627,13 +718,14 @@ fn valley<T: Real>(
     let second = du * du.transpose() * (up * up * up / sum)
         + dd * dd.transpose() * (down * down * down / sum);
     let perp = cov - s * s.transpose();
-    Some((mean, perp + second - mean * mean.transpose()))
+    (mean, perp + second - mean * mean.transpose())
 }
 
 /// The posterior: value and 1σ of every datum, the mean and `√(cᵀ Σ c)` for its gradient
 /// `c`, with `Σ` the Laplace covariance `A⁻¹` in every direction but the strike height's
 /// valley, where the profile posterior replaces it; reported as `D Σ D`, `D =
 /// diag(sd_scale)` (the posterior σ calibration, [`Settings::sd_scale`]).
+#[cfg_attr(all(target_os = "none", not(target_abi = "eabihf")), inline(never))]
 fn posterior<T: Real>(
     problem: &Problem<'_, T>,
     solution: &Solution<T>,
@@ -641,16 +733,8 @@ fn posterior<T: Real>(
     summary: Posterior,
     sd_scale: &Unknowns<T>,
 ) -> Result<Estimate<T>> {
-    let Solution {
-        x,
-        a,
-        jac,
-        f,
-        iterations,
-    } = solution;
+    let Solution { x, a, f, .. } = solution;
     let mut cov = inverse(a)?;
-    // the smash factor and the residuals are those of the most probable delivery
-    let map_speed = x.get(SPEED).copied().unwrap_or_else(T::zero);
     let mut mean = *x;
     let profile = match summary {
         Posterior::Laplace => None,
@@ -660,8 +744,32 @@ fn posterior<T: Real>(
         mean += shift;
         cov = c;
     }
+    summarise(problem, solution, club_data, &mean, &cov, sd_scale)
+}
+
+/// The estimate from the posterior's `mean` and covariance `cov` (before the σ
+/// calibration `sd_scale`), with the smash factor and the residuals of the most probable
+/// delivery (`solution`). Out of line: [`posterior`]'s frame sits under the valley's
+/// forward evaluations.
+#[cfg_attr(all(target_os = "none", not(target_abi = "eabihf")), inline(never))]
+fn summarise<T: Real>(
+    problem: &Problem<'_, T>,
+    solution: &Solution<T>,
+    club_data: &ClubData<T>,
+    mean: &V7<T>,
+    cov: &M7<T>,
+    sd_scale: &Unknowns<T>,
+) -> Result<Estimate<T>> {
+    let Solution {
+        x,
+        jac,
+        f,
+        iterations,
+        ..
+    } = solution;
+    let map_speed = x.get(SPEED).copied().unwrap_or_else(T::zero);
     let d = V7::<T>::from(sd_scale.to_array());
-    cov = cov.component_mul(&(d * d.transpose()));
+    let cov = cov.component_mul(&(d * d.transpose()));
     let sd = |c: V7<T>| -> Result<T> {
         let var = c.dot(&(cov * c));
         Ok(if var > T::zero() {
@@ -671,7 +779,8 @@ fn posterior<T: Real>(
         })
     };
     let e = |i: usize| V7::<T>::from_fn(|k, _| if k == i { T::one() } else { T::zero() });
-    let u = unknowns(&mean);
+    let u = unknowns(mean);
+    // the smash factor and the residuals are those of the most probable delivery
     let speed = map_speed;
     let ball_speed = f.ball_speed_mps;
     let smash = if speed > T::zero() {

@@ -162,7 +162,9 @@ impl<T: Real> Problem<T> {
     }
 }
 
-/// Solves the impact of `strike` between `club` and `ball` with `solver`.
+/// Solves the impact of `strike` between `club` and `ball` with `solver`; with a club's
+/// empirical spin-axis share other than 1 the ball's spin axis is then scaled
+/// ([`axis_share`]).
 ///
 /// # Errors
 /// [`Error::OffFace`], [`Error::NoApproach`], or [`Error::Singular`] when the system is too
@@ -174,6 +176,13 @@ pub fn solve<T: Real>(
     strike: &Strike<T>,
     solver: Solver,
 ) -> Result<ImpactOutcome<T>> {
+    // The share's path is its own (cold, out of line): the physics' path is the code it
+    // was, with one comparison before it (docs/firmware.md: M4F cost; the micro:bit's f64
+    // estimate stacks this frame deep).
+    #[allow(clippy::float_cmp)]
+    if club.spin_axis_share() != T::one() {
+        return solve_with_axis_share(club, ball, strike, solver);
+    }
     let problem = Problem::new(club, ball, strike)?;
     // the seed's path is the seed's code: a law it does not use costs it nothing
     let post = match (solver, club.contact_law()) {
@@ -200,8 +209,6 @@ pub fn solve<T: Real>(
     {
         return Err(Error::Singular);
     }
-    // the empirical D-plane share, when the club asks for one (1: nothing is computed)
-    let ball_after = axis_share::apply(club.spin_axis_share(), &ball_after);
     let launch = LaunchMetrics::from_motion(&ball_after, strike.club_speed_mps());
     // Finite components can still overflow a norm (inputs near the precision's largest
     // value; found by fuzzing, issue 7): out of range for the precision, never ±∞ out.
@@ -222,4 +229,28 @@ pub fn solve<T: Real>(
         contact: problem.contact,
         launch,
     })
+}
+
+/// [`solve`] for a club with an empirical spin-axis share: the physics' impact (the same
+/// club with the share 1), then the ball's spin axis scaled ([`axis_share::apply`]) and its
+/// launch metrics recomputed.
+#[cold]
+#[inline(never)]
+fn solve_with_axis_share<T: Real>(
+    club: &ClubHead<T>,
+    ball: &Ball<T>,
+    strike: &Strike<T>,
+    solver: Solver,
+) -> Result<ImpactOutcome<T>> {
+    let mut out = solve(&club.with_physics_axis(), ball, strike, solver)?;
+    axis_share::apply(
+        club.spin_axis_share(),
+        &out.ball.velocity_mps,
+        &mut out.ball.spin_radps,
+    );
+    out.launch = LaunchMetrics::from_motion(&out.ball, strike.club_speed_mps());
+    if !out.launch.spin_radps.is_finite() {
+        return Err(Error::Singular);
+    }
+    Ok(out)
 }
