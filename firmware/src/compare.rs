@@ -9,19 +9,23 @@ use carry_core::Real;
 pub trait Precision: Real + defmt::Format {
     /// `f32` or `f64`, for the log.
     const NAME: &'static str;
-    /// The value's bits, widened to 64.
-    fn bits(self) -> u64;
+    /// The bits' type (`u32`, `u64`).
+    type Bits: Copy + PartialEq + Into<u64>;
+    /// The value's bits.
+    fn bits(self) -> Self::Bits;
 }
 
 impl Precision for f32 {
     const NAME: &'static str = "f32";
-    fn bits(self) -> u64 {
-        u64::from(self.to_bits())
+    type Bits = u32;
+    fn bits(self) -> u32 {
+        self.to_bits()
     }
 }
 
 impl Precision for f64 {
     const NAME: &'static str = "f64";
+    type Bits = u64;
     fn bits(self) -> u64 {
         self.to_bits()
     }
@@ -34,7 +38,7 @@ pub fn identical<T: Precision, const N: usize>(
     variant: &str,
     names: &[&str; N],
     target: &Result<[T; N], carry_core::Error>,
-    host: &Host<N>,
+    host: &Host<T::Bits, N>,
 ) -> bool {
     match (target, host) {
         (Ok(t), Host::Ok(h)) => {
@@ -48,9 +52,9 @@ pub fn identical<T: Precision, const N: usize>(
                         case,
                         variant,
                         names[i],
-                        t[i].bits(),
+                        t[i].bits().into(),
                         t[i],
-                        h[i]
+                        h[i].into()
                     );
                 }
             }

@@ -11,15 +11,21 @@ pub enum Expected<const N: usize> {
     Error(&'static str),
 }
 
-/// The host's result: IEEE bit patterns (`f32` bits widened to `u64`), or an error code
-/// ([`crate::cases::error_code`]).
+/// The host's result: IEEE bit patterns (`B`: `u32` for `f32`, `u64` for `f64`; the
+/// narrow one halves the f32 tables' flash, which the micro:bit's 256 KiB needs), or an
+/// error code ([`crate::cases::error_code`]).
 #[derive(Debug, Clone, Copy)]
-pub enum Host<const N: usize> {
+pub enum Host<B, const N: usize> {
     /// The outputs' bits.
-    Ok([u64; N]),
+    Ok([B; N]),
     /// The error code.
     Err(u8),
 }
+
+/// A host result in `f32` (bits as `u32`).
+pub type Host32<const N: usize> = Host<u32, N>;
+/// A host result in `f64` (bits as `u64`).
+pub type Host64<const N: usize> = Host<u64, N>;
 
 /// One impact case: input, reference (ball velocity and spin, SI) and host results per
 /// variant ([`crate::cases::VARIANTS`] order).
@@ -32,9 +38,9 @@ pub struct ImpactCase {
     /// Reference: ball velocity (3) and ball spin (3), or the error.
     pub expected: Expected<6>,
     /// Host results in f32, per variant.
-    pub host_f32: [Host<IMPACT_OUTPUTS>; crate::cases::VARIANTS.len()],
+    pub host_f32: [Host32<IMPACT_OUTPUTS>; crate::cases::VARIANTS.len()],
     /// Host results in f64, per variant.
-    pub host_f64: [Host<IMPACT_OUTPUTS>; crate::cases::VARIANTS.len()],
+    pub host_f64: [Host64<IMPACT_OUTPUTS>; crate::cases::VARIANTS.len()],
 }
 
 /// One flight case: input, reference (carry, side, flight time, apex) and host results
@@ -48,13 +54,13 @@ pub struct FlightCase {
     /// Reference: carry, side, flight time, apex.
     pub expected: [f64; 4],
     /// Host results in f32, per integrator.
-    pub host_f32: [Host<FLIGHT_OUTPUTS>; 3],
+    pub host_f32: [Host32<FLIGHT_OUTPUTS>; 3],
     /// Host results in f64, per integrator.
-    pub host_f64: [Host<FLIGHT_OUTPUTS>; 3],
+    pub host_f64: [Host64<FLIGHT_OUTPUTS>; 3],
     /// Host results in f32 with the calibrated model (`tour2023`), default fidelity.
-    pub tour2023_f32: Host<FLIGHT_OUTPUTS>,
+    pub tour2023_f32: Host32<FLIGHT_OUTPUTS>,
     /// Host results in f64 with the calibrated model (`tour2023`), default fidelity.
-    pub tour2023_f64: Host<FLIGHT_OUTPUTS>,
+    pub tour2023_f64: Host64<FLIGHT_OUTPUTS>,
 }
 
 /// One full shot with a ground and the host's results (f32, f64).
@@ -63,9 +69,9 @@ pub struct GroundHost {
     /// Case name ([`crate::ground_cases::GROUND_CASES`], same order).
     pub name: &'static str,
     /// Host result in f32.
-    pub host_f32: Host<{ crate::ground_cases::GROUND_OUTPUTS }>,
+    pub host_f32: Host32<{ crate::ground_cases::GROUND_OUTPUTS }>,
     /// Host result in f64.
-    pub host_f64: Host<{ crate::ground_cases::GROUND_OUTPUTS }>,
+    pub host_f64: Host64<{ crate::ground_cases::GROUND_OUTPUTS }>,
 }
 
 /// One estimate (issue 23) and the host's results (f32, f64).
@@ -74,9 +80,9 @@ pub struct EstimateHost {
     /// Case name ([`crate::estimate_cases::ESTIMATE_CASES`], same order).
     pub name: &'static str,
     /// Host result in f32.
-    pub host_f32: Host<{ crate::estimate_cases::ESTIMATE_OUTPUTS }>,
+    pub host_f32: Host32<{ crate::estimate_cases::ESTIMATE_OUTPUTS }>,
     /// Host result in f64.
-    pub host_f64: Host<{ crate::estimate_cases::ESTIMATE_OUTPUTS }>,
+    pub host_f64: Host64<{ crate::estimate_cases::ESTIMATE_OUTPUTS }>,
 }
 
 /// One launch fit (issue 36) and the host's results (f32, f64).
@@ -85,9 +91,9 @@ pub struct LaunchFitHost {
     /// Case name ([`crate::launch_fit_cases::LAUNCH_FIT_CASES`], same order).
     pub name: &'static str,
     /// Host result in f32.
-    pub host_f32: Host<{ crate::launch_fit_cases::LAUNCH_FIT_OUTPUTS }>,
+    pub host_f32: Host32<{ crate::launch_fit_cases::LAUNCH_FIT_OUTPUTS }>,
     /// Host result in f64.
-    pub host_f64: Host<{ crate::launch_fit_cases::LAUNCH_FIT_OUTPUTS }>,
+    pub host_f64: Host64<{ crate::launch_fit_cases::LAUNCH_FIT_OUTPUTS }>,
 }
 
 include!(concat!(env!("OUT_DIR"), "/golden_data.rs"));

@@ -16,7 +16,7 @@ use carry_firmware::golden::{ESTIMATE, Host};
 
 /// Estimates of club data from ball data (issue 23), bit for bit against the host.
 fn estimate_bit_identity<T: Precision>(
-    host: impl Fn(&carry_firmware::golden::EstimateHost) -> &Host<26>,
+    host: impl Fn(&carry_firmware::golden::EstimateHost) -> &Host<T::Bits, 26>,
 ) {
     let mut differ = 0u32;
     for (case, h) in ESTIMATE_CASES.iter().zip(ESTIMATE) {

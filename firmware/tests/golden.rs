@@ -22,7 +22,7 @@ use carry_firmware::golden::{Expected, FLIGHT, GROUND, Host, IMPACT};
 use carry_firmware::ground_cases::{GROUND_CASES, GROUND_NAMES};
 
 fn impact_bit_identity<T: Precision>(
-    host: impl Fn(&carry_firmware::golden::ImpactCase) -> &[Host<23>; VARIANTS.len()],
+    host: impl Fn(&carry_firmware::golden::ImpactCase) -> &[Host<T::Bits, 23>; VARIANTS.len()],
 ) {
     let mut compared = 0u32;
     let mut differ = 0u32;
@@ -45,7 +45,7 @@ fn impact_bit_identity<T: Precision>(
 }
 
 fn flight_bit_identity<T: Precision>(
-    host: impl Fn(&carry_firmware::golden::FlightCase) -> &[Host<13>; 3],
+    host: impl Fn(&carry_firmware::golden::FlightCase) -> &[Host<T::Bits, 13>; 3],
 ) {
     let mut compared = 0u32;
     let mut differ = 0u32;
@@ -68,7 +68,7 @@ fn flight_bit_identity<T: Precision>(
 }
 
 fn calibrated_bit_identity<T: Precision>(
-    host: impl Fn(&carry_firmware::golden::FlightCase) -> &Host<13>,
+    host: impl Fn(&carry_firmware::golden::FlightCase) -> &Host<T::Bits, 13>,
 ) {
     let mut differ = 0u32;
     for case in FLIGHT {
@@ -92,7 +92,7 @@ fn calibrated_bit_identity<T: Precision>(
 /// Full shots with a ground (bounces, hops with the scene's aerodynamics, roll to rest or
 /// the time cap), bit for bit against the host.
 fn ground_bit_identity<T: Precision>(
-    host: impl Fn(&carry_firmware::golden::GroundHost) -> &Host<10>,
+    host: impl Fn(&carry_firmware::golden::GroundHost) -> &Host<T::Bits, 10>,
 ) {
     let mut differ = 0u32;
     for (case, h) in GROUND_CASES.iter().zip(GROUND) {

@@ -22,7 +22,9 @@ mod fits {
     };
 
     /// Every launch fit, bit for bit against the host, and near the truth.
-    pub fn bit_identity<T: Precision>(host: impl Fn(&LaunchFitHost) -> &Host<LAUNCH_FIT_OUTPUTS>) {
+    pub fn bit_identity<T: Precision>(
+        host: impl Fn(&LaunchFitHost) -> &Host<T::Bits, LAUNCH_FIT_OUTPUTS>,
+    ) {
         let mut ws = Workspace::<T>::new();
         let mut differ = 0u32;
         for (case, h) in LAUNCH_FIT_CASES.iter().zip(LAUNCH_FIT) {

@@ -25,15 +25,21 @@
 //! where they lie (`../shared/data/trackman_amateur_drives.csv`; `CARRY_DRIVES` overrides),
 //! never copied.
 //!
+//! With `--spin-axis-share=fit` every fold also fits the empirical D-plane share of the
+//! axis (docs/impact.md §0.8) on its training rows and estimates with it (the named law,
+//! opt-in: `carry estimate --spin-axis-share K`); `--spin-axis-share=K` uses a given share.
+//!
 //! ```sh
 //! cargo run --release -p carry-lab --example estimate_single_shots
+//! cargo run --release -p carry-lab --example estimate_single_shots -- --spin-axis-share=fit
 //! ```
 
 use carry_core::estimate::{
     BallData, ClubData, Noise, Prior, Settings, Unknowns, estimate, predict,
 };
-use carry_core::{Ball, Preset};
+use carry_core::{Ball, ClubHead, Preset};
 use carry_lab::drives::{self, Drive};
+use carry_lab::fit::single_drives::fit_dplane_share;
 use rayon::prelude::*;
 
 /// One usable drive: ball data (SI), the measured club speed, TrackMan's club data.
@@ -128,12 +134,20 @@ fn fit_prior(train: &[&Drive]) -> Prior<f64> {
 /// at TrackMan's club data and strike location minus TrackMan's ball data — over the rows of
 /// `rows` that carry the strike location (it contains TrackMan's own ball and club
 /// measurement noise too, which is small against it). With the number of rows used.
-fn model_error(rows: &[&Row]) -> (BallData<f64>, usize) {
-    let driver = Preset::find("driver").expect("driver");
-    let club = driver.spec::<f64>().validate().expect("driver");
+fn model_error(rows: &[&Row], club: &ClubHead<f64>) -> (BallData<f64>, usize) {
+    let res: Vec<[f64; 5]> = forward(rows, club)
+        .into_iter()
+        .map(|(f, y)| core::array::from_fn(|i| f[i] - y[i]))
+        .collect();
+    let sd = core::array::from_fn(|i| mean_sd(res.iter().map(|r| r[i])).1);
+    (BallData::from_array(sd), res.len())
+}
+
+/// The ball data the impact model gives at TrackMan's club data and strike location, with
+/// TrackMan's ball data, for the rows of `rows` that carry the strike location.
+fn forward(rows: &[&Row], club: &ClubHead<f64>) -> Vec<([f64; 5], [f64; 5])> {
     let ball = Ball::standard();
-    let res: Vec<[f64; 5]> = rows
-        .par_iter()
+    rows.par_iter()
         .filter_map(|r| {
             let [toe, height] = r.strike_m?;
             let r2 = f64::to_radians;
@@ -146,13 +160,38 @@ fn model_error(rows: &[&Row]) -> (BallData<f64>, usize) {
                 impact_height_m: height,
                 club_speed_mps: r.club_speed_mps,
             };
-            let f = predict(&club, &ball, &x).ok()?.to_array();
-            let y = r.y.to_array();
-            Some(core::array::from_fn(|i| f[i] - y[i]))
+            let f = predict(club, &ball, &x).ok()?.to_array();
+            Some((f, r.y.to_array()))
         })
-        .collect();
-    let sd = core::array::from_fn(|i| mean_sd(res.iter().map(|r| r[i])).1);
-    (BallData::from_array(sd), res.len())
+        .collect()
+}
+
+/// The driver preset's club with the empirical spin-axis share `k` (1: the physics).
+fn club(k: f64) -> ClubHead<f64> {
+    let mut spec = Preset::find("driver").expect("driver").spec::<f64>();
+    spec.spin_axis_share = k;
+    spec.validate().expect("a share in (0, 1]")
+}
+
+/// The axis law for a fold: `None` for the physics; `Some(None)` to fit the D-plane share
+/// on the training rows (`fit_dplane_share` on the model's axis at TrackMan's club data and
+/// strike against TrackMan's axis); `Some(Some(k))` for a given share.
+type AxisArg = Option<Option<f64>>;
+
+fn share_for(axis: AxisArg, train: &[&Row]) -> f64 {
+    match axis {
+        None => 1.0,
+        Some(Some(k)) => k,
+        Some(None) => {
+            let pairs: Vec<(f64, f64)> = forward(train, &club(1.0))
+                .into_iter()
+                .map(|(f, y)| (f[4].to_degrees(), y[4].to_degrees()))
+                .collect();
+            fit_dplane_share(&pairs)
+                .expect("training rows with a strike location")
+                .clamp(0.01, 1.0)
+        }
+    }
 }
 
 fn settings(prior: Prior<f64>, model: &BallData<f64>) -> Settings<f64> {
@@ -171,9 +210,7 @@ const OUTPUTS: [&str; 6] = ["face", "path", "loft", "attack", "toe", "height"];
 /// when the estimate failed.
 type Outcome = Option<([f64; 6], [f64; 6], bool, f64)>;
 
-fn run(rows: &[&Row], s: &Settings<f64>) -> Vec<Outcome> {
-    let driver = Preset::find("driver").expect("driver");
-    let club = driver.spec::<f64>().validate().expect("driver");
+fn run(rows: &[&Row], s: &Settings<f64>, club: &ClubHead<f64>) -> Vec<Outcome> {
     let ball = Ball::standard();
     rows.par_iter()
         .map(|r| {
@@ -181,7 +218,7 @@ fn run(rows: &[&Row], s: &Settings<f64>) -> Vec<Outcome> {
                 club_speed_mps: Some(r.club_speed_mps),
                 ..ClubData::default()
             };
-            let e = estimate(&club, &ball, &r.y, &c, s).ok()?;
+            let e = estimate(club, &ball, &r.y, &c, s).ok()?;
             let (v, sd) = (e.value, e.sd);
             let d = f64::to_degrees;
             let value = [
@@ -319,6 +356,16 @@ fn f6(f: &[f64; 6]) -> String {
 }
 
 fn main() {
+    let axis: AxisArg = match std::env::args().nth(1).as_deref() {
+        None => None,
+        Some("--spin-axis-share=fit") => Some(None),
+        Some(a) => Some(Some(
+            a.strip_prefix("--spin-axis-share=")
+                .and_then(|k| k.parse().ok())
+                .filter(|k: &f64| *k > 0.0 && *k <= 1.0)
+                .expect("usage: [--spin-axis-share=fit|K], K in (0, 1]"),
+        )),
+    };
     let all = drives::read_shared().expect("the single drives (../shared/data)");
     let usable = rows(&all);
     println!(
@@ -339,15 +386,17 @@ fn main() {
         let train_drives: Vec<&Drive> = all.iter().filter(|d| d.session() != s).collect();
         let prior = fit_prior(&train_drives);
         let train_all: Vec<&Row> = usable.iter().filter(|r| r.session != s).collect();
-        let (me, n_me) = model_error(&train_all);
+        let k = share_for(axis, &train_all);
+        let club = club(k);
+        let (me, n_me) = model_error(&train_all, &club);
         let st = settings(prior, &me);
         let train: Vec<&Row> = train_all.iter().copied().step_by(2).collect();
-        let factor = sd_factors(&run(&train, &st));
+        let factor = sd_factors(&run(&train, &st, &club));
         let held: Vec<&Row> = usable.iter().filter(|r| r.session == s).collect();
-        let out = run(&held, &st);
+        let out = run(&held, &st, &club);
         let m = me.to_array();
         lines.push(format!(
-            "block {s}: model error from {n_me} training rows: ball speed {:.2} m/s, launch {:.2}°, direction {:.2}°, spin {:.0} rpm, axis {:.2}°; σ factors {}",
+            "block {s}: spin-axis share {k:.3}; model error from {n_me} training rows: ball speed {:.2} m/s, launch {:.2}°, direction {:.2}°, spin {:.0} rpm, axis {:.2}°; σ factors {}",
             m[0],
             m[1].to_degrees(),
             m[2].to_degrees(),
@@ -399,8 +448,11 @@ fn main() {
     let every: Vec<&Row> = usable.iter().collect();
     let every_drive: Vec<&Drive> = all.iter().collect();
     let prior = fit_prior(&every_drive);
-    let (me, n_me) = model_error(&every);
-    let out = run(&every, &settings(prior, &me));
+    let k = share_for(axis, &every);
+    let every_club = club(k);
+    println!("spin-axis share: {k:.3}");
+    let (me, n_me) = model_error(&every, &every_club);
+    let out = run(&every, &settings(prior, &me), &every_club);
     let factor = sd_factors(&out);
     let d = f64::to_degrees;
     let (m, sd) = (prior.mean, prior.sd);
@@ -436,7 +488,7 @@ fn main() {
         "{}",
         line(
             "all, the core's defaults (Settings::for_preset)",
-            &score(&run(&every, &core), &ONE)
+            &score(&run(&every, &core, &every_club), &ONE)
         )
     );
 }

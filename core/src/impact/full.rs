@@ -88,6 +88,10 @@ pub fn assemble_in_frame<T: Real>(
 ///
 /// # Errors
 /// [`crate::Error::Singular`] when a pivot falls below the scale-aware threshold.
+// Out of line on soft-float MCUs: the 15×15 system's frame is then not reserved by every
+// `impact::solve` (the spin-axis share's path holds two of those on the micro:bit's 16 KiB
+// stack). Inlined elsewhere: out of line it costs the M4F's reduced solve 150 instructions.
+#[cfg_attr(all(target_os = "none", not(target_abi = "eabihf")), inline(never))]
 pub fn solve<T: Real>(problem: &Problem<T>, pivoting: Pivoting) -> Result<PostImpact<T>> {
     let (a, b) = assemble(problem);
     solve_system(a, &b, pivoting)
