@@ -46,7 +46,11 @@ fn run<T: Real>(b: &mut Bytes<'_>) -> Result<()> {
             cg_to_face_m: Vector3::from(b.vec3(-0.05, 0.06).map(lit)),
             restitution: lit(b.param(0.0, 1.0)),
             contact: spec.contact,
+            spin_axis_share: lit(b.param(-0.1, 1.1)),
         };
+    } else if b.flag() {
+        // the empirical D-plane share through the estimator's forward model
+        spec.spin_axis_share = lit(b.param(0.05, 1.0));
     }
     let club = spec.validate()?;
     let ball = Ball::<T>::standard();
