@@ -8,7 +8,7 @@ use crate::report::{
 };
 use carry_core::flight::{Integrator, Recorder, Sample};
 use carry_core::impact::{self, Solver};
-use carry_core::lanes::{self, LaneReal, Shot};
+use carry_core::lanes::{LaneReal, Shot};
 use carry_core::real::{lit, to_f64};
 use carry_core::units::{deg, rpm, to_deg, to_rpm};
 use carry_core::{
@@ -546,7 +546,7 @@ pub fn run_rows_in<T: LaneReal>(
     }
     let integrator = n.integrator::<T>();
     let mut flights: Vec<Option<Result<FlightReport, InputError>>> = vec![None; shots.len()];
-    lanes::fly_each(&shots, &integrator, |k, out| {
+    crate::lanes::fly_each(&shots, &integrator, |k, out| {
         let shot = &shots[k];
         flights[k] = Some(
             out.map(|o| flight_report(&o))

@@ -33,9 +33,9 @@ pub trait Pack:
     const LANES: usize;
     /// Every lane `x`.
     fn splat(x: Self::Scalar) -> Self;
-    /// Lane `l` (zero out of range).
+    /// Lane `l % LANES`.
     fn get(&self, l: usize) -> Self::Scalar;
-    /// Sets lane `l` (nothing out of range).
+    /// Sets lane `l % LANES`.
     fn set(&mut self, l: usize, x: Self::Scalar);
     /// The correctly rounded square root of each lane.
     #[must_use]
@@ -55,6 +55,12 @@ pub trait Pack:
     /// `t` where the mask `self` is set, else `f`.
     #[must_use]
     fn blend(self, t: Self, f: Self) -> Self;
+    /// The mask's lanes as bits (lane `l` in bit `l`).
+    #[must_use]
+    fn bits(self) -> u32;
+    /// The mask of the lanes whose bit is set in `bits`.
+    #[must_use]
+    fn mask(bits: u32) -> Self;
 }
 
 macro_rules! pack {
@@ -68,13 +74,11 @@ macro_rules! pack {
             }
             #[inline(always)]
             fn get(&self, l: usize) -> $scalar {
-                self.as_array_ref().get(l).copied().unwrap_or(0.0)
+                self.as_array_ref()[l % $n]
             }
             #[inline(always)]
             fn set(&mut self, l: usize, x: $scalar) {
-                if let Some(slot) = self.as_array_mut().get_mut(l) {
-                    *slot = x;
-                }
+                self.as_array_mut()[l % $n] = x;
             }
             #[inline(always)]
             fn sqrt(self) -> Self {
@@ -99,6 +103,17 @@ macro_rules! pack {
             #[inline(always)]
             fn blend(self, t: Self, f: Self) -> Self {
                 <$pack>::blend(self, t, f)
+            }
+            #[inline(always)]
+            fn bits(self) -> u32 {
+                self.move_mask().cast_unsigned()
+            }
+            #[inline(always)]
+            fn mask(bits: u32) -> Self {
+                let set = <$scalar>::from_bits(!0);
+                <$pack>::new(core::array::from_fn(|l| {
+                    if bits & (1 << l) != 0 { set } else { 0.0 }
+                }))
             }
         }
     };
