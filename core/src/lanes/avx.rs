@@ -48,7 +48,7 @@ fn fly(
     integrator: &Integrator<f64>,
     sink: &mut dyn FnMut(usize, Result<FlightOutcome<f64>>),
 ) {
-    fly_each_in::<F64x4>(shots, integrator, sink);
+    fly_each_in::<F64x4, 4>(shots, integrator, sink);
 }
 
 /// Four `f64` lanes in one AVX register (only ever created inside [`fly`]).
@@ -161,11 +161,5 @@ impl Pack for F64x4 {
         Self::from_array(core::array::from_fn(|l| {
             if bits & (1 << l) != 0 { set } else { 0.0 }
         }))
-    }
-}
-
-impl core::fmt::Debug for F64x4 {
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        self.to_array().fmt(f)
     }
 }

@@ -78,7 +78,7 @@ pub trait LaneReal: Real {
         sink: &mut dyn FnMut(usize, Result<FlightOutcome<Self>>),
     ) {
         let _ = cpu;
-        fly_each_in::<Self::Pack>(shots, integrator, sink);
+        fly_each_in::<Self::Pack, LANES>(shots, integrator, sink);
     }
 }
 
@@ -97,7 +97,7 @@ impl LaneReal for f64 {
             return avx::fly_each(cpu, shots, integrator, sink);
         }
         let _ = cpu;
-        fly_each_in::<Self::Pack>(shots, integrator, sink);
+        fly_each_in::<Self::Pack, LANES>(shots, integrator, sink);
     }
 }
 
@@ -171,7 +171,7 @@ pub fn fly_each<T: LaneReal>(
     integrator: &Integrator<T>,
     sink: impl FnMut(usize, Result<FlightOutcome<T>>),
 ) {
-    fly_each_in::<T::Pack>(shots, integrator, sink);
+    fly_each_in::<T::Pack, LANES>(shots, integrator, sink);
 }
 
 /// [`fly_each`] on the packs `P`: the whole kernel, inlined into its caller, so that a
@@ -179,12 +179,11 @@ pub fn fly_each<T: LaneReal>(
 /// `carry_io::lanes`) compiles the kernel with them.
 #[doc(hidden)]
 #[inline(always)]
-pub fn fly_each_in<P: Pack>(
+pub fn fly_each_in<P: Pack, const N: usize>(
     shots: &[Shot<'_, P::Scalar>],
     integrator: &Integrator<P::Scalar>,
     mut sink: impl FnMut(usize, Result<FlightOutcome<P::Scalar>>),
 ) {
-    const N: usize = LANES;
     let cfg = match integrator.method() {
         Ok(Method::Adaptive(cfg)) if P::LANES == N => cfg,
         _ => {
@@ -194,10 +193,15 @@ pub fn fly_each_in<P: Pack>(
             return;
         }
     };
-    let mut run = Run::<P>::new(cfg);
+    let mut run = Run::<P, N>::new(cfg);
+    // The lanes' states and `k₁` are locals, not `run`'s fields: kept in registers (and
+    // spill slots) rather than in memory, where a blend compiles to a masked store (slow).
+    let zero = P::splat(lit(0.0));
+    let (mut y, mut k1): (States<P>, States<P>) = ([zero; 7], [zero; 7]);
     let mut lanes: [Option<Lane<'_, P::Scalar>>; N] = core::array::from_fn(|_| None);
     for (l, slot) in lanes.iter_mut().enumerate() {
         *slot = run.refill(l, shots, integrator, &mut sink);
+        place(&mut y, l, slot);
     }
     let (rtol, atol) = (P::splat(cfg.rtol), P::splat(cfg.atol));
     loop {
@@ -214,6 +218,7 @@ pub fn fly_each_in<P: Pack>(
                 {
                     sink(lane.index, Err(run.failure(l)));
                     *slot = run.refill(l, shots, integrator, &mut sink);
+                    place(&mut y, l, slot);
                 }
             }
         }
@@ -222,24 +227,37 @@ pub fn fly_each_in<P: Pack>(
         }
         if run.fresh != 0 {
             // `k₁ = f(y₀)` of the lanes just filled (one evaluation of every lane).
-            let k = kernel::eval(&run.field, &run.y);
+            let k = kernel::eval(&run.field, &y);
             let fresh = P::mask(run.fresh);
-            for (k1, ki) in run.k1.iter_mut().zip(k.iter()) {
+            for (k1, ki) in k1.iter_mut().zip(k.iter()) {
                 *k1 = fresh.blend(*ki, *k1);
             }
             run.fresh = 0;
         }
-        let st = kernel::step(&run.field, &run.y, &run.k1, run.h, rtol, atol);
-        run.advance(&st, &mut lanes, shots, integrator, &mut sink);
+        let st = kernel::step(&run.field, &y, &k1, run.h, rtol, atol);
+        run.advance(
+            &st,
+            (&mut y, &mut k1),
+            &mut lanes,
+            shots,
+            integrator,
+            &mut sink,
+        );
+    }
+}
+
+/// Writes the start state of the lane just filled into `slot` (if any) into lane `l` of `y`.
+#[inline(always)]
+fn place<P: Pack>(y: &mut States<P>, l: usize, slot: &Option<Lane<'_, P::Scalar>>) {
+    if let Some(lane) = slot {
+        kernel::set_lane(y, l, &lane.start);
     }
 }
 
 /// The lanes' state, kept in packs between steps (the scalar loop's locals, lane by lane).
-struct Run<P: Pack> {
+struct Run<P: Pack, const N: usize> {
     cfg: Adaptive<P::Scalar>,
     field: kernel::Field<P>,
-    y: States<P>,
-    k1: States<P>,
     /// Time `t`, step `h`, the flight's time limit and landing height, and the mask of
     /// "the last step was rejected".
     t: P,
@@ -248,11 +266,11 @@ struct Run<P: Pack> {
     landing_height: P,
     rejected_last: P,
     /// Steps tried (accepted or not) and rejected, per lane.
-    attempts: [u32; LANES],
-    rejected: [u32; LANES],
+    attempts: [u32; N],
+    rejected: [u32; N],
     /// The address of the scene whose field each lane holds (0: none): a shot through the
     /// lane's last scene sets only its spin axis.
-    scene_of: [usize; LANES],
+    scene_of: [usize; N],
     /// Bit masks of the lanes in flight and of those whose `k₁` is not evaluated yet.
     active: u32,
     fresh: u32,
@@ -267,6 +285,8 @@ struct Lane<'s, T: Real> {
     axis: Vector3<T>,
     refined: bool,
     tracker: Tracker<'s, 's, T>,
+    /// The start state (written into the lanes' states by the caller of `refill`).
+    start: State<T>,
 }
 
 /// What a lane's events made of its accepted step.
@@ -299,22 +319,20 @@ fn larger_p<P: Pack>(a: P, b: P) -> P {
     (a.lt(b) | a.ne(a)).blend(b, a)
 }
 
-impl<T: Real, P: Pack<Scalar = T>> Run<P> {
+impl<T: Real, P: Pack<Scalar = T>, const N: usize> Run<P, N> {
     fn new(cfg: Adaptive<T>) -> Self {
         let zero = P::splat(T::zero());
         Self {
             cfg,
             field: kernel::Field::zero(),
-            y: [zero; 7],
-            k1: [zero; 7],
             t: zero,
             h: P::splat(T::one()),
             time_limit: P::splat(T::one()),
             landing_height: zero,
             rejected_last: zero,
-            attempts: [0; LANES],
-            rejected: [0; LANES],
-            scene_of: [0; LANES],
+            attempts: [0; N],
+            rejected: [0; N],
+            scene_of: [0; N],
             active: 0,
             fresh: 0,
             next: 0,
@@ -400,6 +418,7 @@ impl<T: Real, P: Pack<Scalar = T>> Run<P> {
                         axis,
                         refined: false,
                         tracker: Tracker::new(shot.scene.landing_height, &y0, axis, None),
+                        start: y0,
                     });
                 }
                 Err(e) => sink(index, Err(e)),
@@ -420,7 +439,6 @@ impl<T: Real, P: Pack<Scalar = T>> Run<P> {
             return Err(Error::NoLanding);
         }
         self.set_field(l, scene, &axis);
-        kernel::set_lane(&mut self.y, l, &y0);
         Ok((y0, axis))
     }
 
@@ -477,7 +495,8 @@ impl<T: Real, P: Pack<Scalar = T>> Run<P> {
     fn advance<'s>(
         &mut self,
         st: &kernel::Stages<P>,
-        lanes: &mut [Option<Lane<'s, T>>; LANES],
+        (y, k1): (&mut States<P>, &mut States<P>),
+        lanes: &mut [Option<Lane<'s, T>>; N],
         shots: &[Shot<'s, T>],
         integrator: &Integrator<T>,
         sink: &mut impl FnMut(usize, Result<FlightOutcome<T>>),
@@ -499,8 +518,7 @@ impl<T: Real, P: Pack<Scalar = T>> Run<P> {
         }
         // Only a step with an apex or a landing in it (or a grazing landing to redo)
         // needs the tracker: without them it changes nothing and finds nothing.
-        let event =
-            ok & ((zero.lt(self.y[VY]) & st.y1[VY].le(zero)) | st.y1[Y].le(self.landing_height));
+        let event = ok & ((zero.lt(y[VY]) & st.y1[VY].le(zero)) | st.y1[Y].le(self.landing_height));
         let accepted = ok.bits() & active;
         let events = event.bits() & active;
         let rejected = active & !accepted;
@@ -511,7 +529,8 @@ impl<T: Real, P: Pack<Scalar = T>> Run<P> {
                     continue;
                 }
                 let Some(lane) = slot else { continue };
-                match self.event(lane, l, st) {
+                let (y0, f0) = (kernel::lane(y, l), kernel::lane(k1, l));
+                match self.event(lane, l, st, &y0, &f0) {
                     Event::Take => take |= 1 << l,
                     Event::Redo(th) => {
                         if let Some(r) = self.rejected.get_mut(l) {
@@ -522,6 +541,7 @@ impl<T: Real, P: Pack<Scalar = T>> Run<P> {
                     Event::Done(result) => {
                         sink(lane.index, result);
                         *slot = self.refill(l, shots, integrator, sink);
+                        place(y, l, slot);
                     }
                 }
             }
@@ -545,10 +565,10 @@ impl<T: Real, P: Pack<Scalar = T>> Run<P> {
         let h0 = self.h;
         self.h = tk.blend(h_take, rj.blend(h_reject, h0));
         self.t = tk.blend(self.t + h0, self.t);
-        for (y, y1) in self.y.iter_mut().zip(st.y1.iter()) {
+        for (y, y1) in y.iter_mut().zip(st.y1.iter()) {
             *y = tk.blend(*y1, *y);
         }
-        for (k1, k7) in self.k1.iter_mut().zip(st.k7.iter()) {
+        for (k1, k7) in k1.iter_mut().zip(st.k7.iter()) {
             *k1 = tk.blend(*k7, *k1);
         }
         self.rejected_last = (rj | self.rejected_last) & !tk;
@@ -568,6 +588,7 @@ impl<T: Real, P: Pack<Scalar = T>> Run<P> {
                     {
                         sink(lane.index, Err(Error::StepSizeUnderflow));
                         *slot = self.refill(l, shots, integrator, sink);
+                        place(y, l, slot);
                     }
                 }
             }
@@ -576,18 +597,24 @@ impl<T: Real, P: Pack<Scalar = T>> Run<P> {
 
     /// Lane `l`'s events in its accepted step (the scalar loop's tracker calls): the
     /// grazing landing's redone step, the apex, the landing.
-    fn event(&self, lane: &mut Lane<'_, T>, l: usize, st: &kernel::Stages<P>) -> Event<T> {
+    fn event(
+        &self,
+        lane: &mut Lane<'_, T>,
+        l: usize,
+        st: &kernel::Stages<P>,
+        y0: &State<T>,
+        f0: &State<T>,
+    ) -> Event<T> {
         let (h, t) = (self.h.get(l), self.t.get(l));
-        let y0 = kernel::lane(&self.y, l);
         let y1 = kernel::lane(&st.y1, l);
-        let (k1, k7) = (kernel::lane(&self.k1, l), kernel::lane(&st.k7, l));
+        let k7 = kernel::lane(&st.k7, l);
         let (k3, k4) = (kernel::lane(&st.k3, l), kernel::lane(&st.k4, l));
         let (k5, k6) = (kernel::lane(&st.k5, l), kernel::lane(&st.k6, l));
         let step = Step {
             h,
-            y0: &y0,
+            y0,
             y1: &y1,
-            f0: &k1,
+            f0,
             f1: &k7,
             mid: Some([&k3, &k4, &k5, &k6]),
         };
