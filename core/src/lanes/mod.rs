@@ -1,11 +1,12 @@
 //! The lanes kernel (issue 37): many flights advanced together, [`LANES`] at a time, as a
 //! structure of arrays, for batches. Each lane is one shot with its own adaptive step, its
 //! own acceptance, apex and landing; a lane that lands (or fails) is refilled at once with
-//! the next shot, so the lanes stay full until the batch runs out. The force evaluations
-//! and the Runge–Kutta stages run across the lanes in branch-free loops over `[T; N]`
-//! arrays that the compiler vectorises (no SIMD crate: docs/performance.md, "Lanes kernel",
-//! measures plain arrays against the `wide` crate); the step control and the events run
-//! per lane, through the scalar path's own tracker.
+//! the next shot, so the lanes stay full until the batch runs out. The force evaluations,
+//! the Runge–Kutta stages, the error norm, the acceptance test and the step controller run
+//! across the lanes on SIMD packs (`wide`'s, or AVX registers through an [`Avx`] token:
+//! [`fly_each_on`]), the lanes' `t`, `h` and states kept in packs between steps; only a
+//! step with an apex or a landing in it, a refill and a failure are handled lane by lane,
+//! through the scalar path's own tracker (docs/performance.md, "Lanes kernel").
 //!
 //! **What it covers** ([`covers`]): the modern family ([`crate::aero::ModernAero`], the
 //! default `tour2023` and `drives2026`) with every effect on ([`crate::Effects::ALL`]), in
