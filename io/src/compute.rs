@@ -489,7 +489,8 @@ pub fn run_in_scene<T: Real>(
 }
 
 /// Runs `mode` on every row of `rows` in precision `T`: as [`run_in`] row by row, with the
-/// flights flown by the core's lanes kernel ([`carry_core::lanes`], issue 37) where it
+/// flights flown by the core's lanes kernel ([`carry_core::lanes`], issue 37; on this CPU's
+/// fastest packs, [`crate::lanes::fly_each`]) where it
 /// covers the row's scene and the integrator (the modern aerodynamic family with every
 /// effect, still air or a uniform wind, no ground, `dp45`), and by the scalar path
 /// otherwise. The results are the row-by-row ones (bit for bit; `io/tests` checks it).
