@@ -1,6 +1,8 @@
 //! The lanes kernel (issue 37) beside the scalar path: the same 256 launches (wedges to
 //! drivers, hooks and slices, in still air and in a uniform wind) flown one by one with
-//! `PreparedScene::fly` and through `lanes::fly_each` (4 lanes), one thread.
+//! `PreparedScene::fly`, through `lanes::fly_each` (4 lanes on the build's baseline packs:
+//! SSE2 on x86-64) and, where the CPU has AVX, through `lanes::fly_each_on` with the AVX
+//! token (what `carry batch` and the Python package run; `carry_io::lanes`), one thread.
 //! Throughput is per shot.
 //!
 //! `cargo bench -p carry-core --bench lanes`; figures in docs/performance.md ("Lanes kernel").
@@ -81,8 +83,28 @@ fn bench(c: &mut Criterion) {
                 carry
             })
         });
+        if let Some(cpu) = avx() {
+            g.bench_function("lanes-avx", |b| {
+                b.iter(|| {
+                    let mut carry = 0.0;
+                    lanes::fly_each_on(Some(cpu), black_box(&shots), &integrator, |_, r| {
+                        if let Ok(o) = r {
+                            carry += o.carry_m;
+                        }
+                    });
+                    carry
+                })
+            });
+        }
         g.finish();
     }
+}
+
+/// The AVX token where the CPU has AVX (the host's check, as `carry_io::lanes::cpu`).
+#[allow(unsafe_code)]
+fn avx() -> Option<lanes::Avx> {
+    // SAFETY: `Avx::new_unchecked` requires AVX, which was just detected.
+    is_x86_feature_detected!("avx").then(|| unsafe { lanes::Avx::new_unchecked() })
 }
 
 criterion_group!(benches, bench);

@@ -71,6 +71,17 @@ fn main() {
             .map(|o| o.carry_m)
             .sum()
     });
+    // The host's check (as `carry_io::lanes`): AVX packs where the CPU has them.
+    #[allow(unsafe_code)]
+    // SAFETY: `Avx::new_unchecked` requires AVX, which was just detected.
+    let cpu = is_x86_feature_detected!("avx").then(|| unsafe { lanes::Avx::new_unchecked() });
+    time("avx", &|| {
+        let mut c = 0.0;
+        lanes::fly_each_on(cpu, &shots, &integrator, |_, r| {
+            c += r.map_or(0.0, |o| o.carry_m)
+        });
+        c
+    });
     time("lanes", &|| {
         let mut c = 0.0;
         lanes::fly_each(&shots, &integrator, |_, r| {

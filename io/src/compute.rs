@@ -8,7 +8,7 @@ use crate::report::{
 };
 use carry_core::flight::{Integrator, Recorder, Sample};
 use carry_core::impact::{self, Solver};
-use carry_core::lanes::{self, LaneReal, Shot};
+use carry_core::lanes::{LaneReal, Shot};
 use carry_core::real::{lit, to_f64};
 use carry_core::units::{deg, rpm, to_deg, to_rpm};
 use carry_core::{
@@ -492,7 +492,8 @@ pub fn run_in_scene<T: Real>(
 }
 
 /// Runs `mode` on every row of `rows` in precision `T`: as [`run_in`] row by row, with the
-/// flights flown by the core's lanes kernel ([`carry_core::lanes`], issue 37) where it
+/// flights flown by the core's lanes kernel ([`carry_core::lanes`], issue 37; on this CPU's
+/// fastest packs, [`crate::lanes::fly_each`]) where it
 /// covers the row's scene and the integrator (the modern aerodynamic family with every
 /// effect, still air or a uniform wind, no ground, `dp45`), and by the scalar path
 /// otherwise. The results are the row-by-row ones (bit for bit; `io/tests` checks it).
@@ -549,7 +550,7 @@ pub fn run_rows_in<T: LaneReal>(
     }
     let integrator = n.integrator::<T>();
     let mut flights: Vec<Option<Result<FlightReport, InputError>>> = vec![None; shots.len()];
-    lanes::fly_each(&shots, &integrator, |k, out| {
+    crate::lanes::fly_each(&shots, &integrator, |k, out| {
         let shot = &shots[k];
         flights[k] = Some(
             out.map(|o| flight_report(&o))

@@ -28,6 +28,7 @@ pub mod compute;
 pub mod contact;
 pub mod error;
 pub mod ground;
+pub mod lanes;
 pub mod mode;
 pub mod params;
 pub mod report;

@@ -3,7 +3,7 @@
 //! that finish at different times, invalid shots among them, scenes the kernel does not
 //! cover mixed in, in `f64` and `f32`, and a property test.
 
-use carry_core::lanes::{self, LaneReal, Shot};
+use carry_core::lanes::{self, Avx, LaneReal, Shot};
 use carry_core::units::{deg, rpm};
 use carry_core::{
     Air, Ball, BallMotion, Effects, Error, FlightOutcome, Ground, Integrator, Launch,
@@ -95,13 +95,14 @@ fn scenes<T: Real>() -> Vec<PreparedScene<T>> {
         .collect()
 }
 
-/// Every shot's result through `lanes::fly_each`, in input order.
-fn fly_lanes<T: LaneReal>(
+/// Every shot's result through `lanes::fly_each_on` with `cpu`, in input order.
+fn fly_lanes_on<T: LaneReal>(
+    cpu: Option<Avx>,
     shots: &[Shot<'_, T>],
     integrator: &Integrator<T>,
 ) -> Vec<Result<FlightOutcome<T>>> {
     let mut out: Vec<Option<Result<FlightOutcome<T>>>> = vec![None; shots.len()];
-    lanes::fly_each(shots, integrator, |i, r| {
+    lanes::fly_each_on(cpu, shots, integrator, |i, r| {
         assert!(out[i].is_none(), "shot {i} reported twice");
         out[i] = Some(r);
     });
@@ -109,6 +110,71 @@ fn fly_lanes<T: LaneReal>(
         .enumerate()
         .map(|(i, r)| r.unwrap_or_else(|| panic!("shot {i} not reported")))
         .collect()
+}
+
+/// Every shot's result through `lanes::fly_each` (the build's baseline packs), in input
+/// order; where the CPU has AVX, also through the AVX packs (`carry_io::lanes::cpu`), which
+/// must give the very same results.
+fn fly_lanes<T: LaneReal>(
+    shots: &[Shot<'_, T>],
+    integrator: &Integrator<T>,
+) -> Vec<Result<FlightOutcome<T>>> {
+    let base = fly_lanes_on(None, shots, integrator);
+    if let Some(cpu) = carry_io::lanes::cpu() {
+        let avx = fly_lanes_on(Some(cpu), shots, integrator);
+        for (i, (a, b)) in avx.iter().zip(&base).enumerate() {
+            assert_eq!(a, b, "shot {i}: AVX packs against the baseline ones");
+        }
+    }
+    let mut plain: Vec<Option<Result<FlightOutcome<T>>>> = vec![None; shots.len()];
+    lanes::fly_each(shots, integrator, |i, r| plain[i] = Some(r));
+    for (i, (a, b)) in plain.iter().zip(&base).enumerate() {
+        assert_eq!(
+            a.as_ref(),
+            Some(b),
+            "shot {i}: fly_each against fly_each_on(None)"
+        );
+    }
+    base
+}
+
+/// Flights that fail in the air, lane by lane: a time limit shorter than most flights (the
+/// lanes' packed time check), beside scenes without one, and a tolerance so fine that
+/// steps underflow or hit the step limit.
+#[test]
+fn lanes_fail_in_the_air_as_the_scalar_path_does() {
+    let ball = Ball::<f64>::standard();
+    let short = Scene::<f64> {
+        time_limit_s: 3.0,
+        ..Scene::default()
+    }
+    .prepare(&ball)
+    .unwrap_or_else(|e| panic!("{e:?}"));
+    let mut scenes = vec![short];
+    scenes.extend(self::scenes::<f64>().into_iter().take(2));
+    let shots = shots(&scenes, 200, 91);
+    let integrator = Integrator::default();
+    let out = fly_lanes::<f64>(&shots, &integrator);
+    compare(&shots, &integrator, &out, 0.0);
+    let timed_out = out
+        .iter()
+        .filter(|r| matches!(r, Err(Error::TimeLimit)))
+        .count();
+    let landed = out.iter().filter(|r| r.is_ok()).count();
+    assert!(
+        timed_out > 10 && landed > 50,
+        "{timed_out} timed out, {landed} landed"
+    );
+    // A tolerance too fine for `f64`: the scalar path's own failures, lane by lane.
+    let fine = Integrator::dormand_prince(1e-300);
+    let few = &shots[..12];
+    let out = fly_lanes::<f64>(few, &fine);
+    compare(few, &fine, &out, 0.0);
+    let underflows = out
+        .iter()
+        .filter(|r| matches!(r, Err(Error::StepSizeUnderflow)))
+        .count();
+    assert!(underflows >= 10, "{underflows} step-size underflows");
 }
 
 /// Compares each lanes result with the scalar one: the same error, or the figures within

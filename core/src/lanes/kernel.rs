@@ -33,9 +33,9 @@ pub trait Pack:
     const LANES: usize;
     /// Every lane `x`.
     fn splat(x: Self::Scalar) -> Self;
-    /// Lane `l` (zero out of range).
+    /// Lane `l % LANES`.
     fn get(&self, l: usize) -> Self::Scalar;
-    /// Sets lane `l` (nothing out of range).
+    /// Sets lane `l % LANES`.
     fn set(&mut self, l: usize, x: Self::Scalar);
     /// The correctly rounded square root of each lane.
     #[must_use]
@@ -55,6 +55,12 @@ pub trait Pack:
     /// `t` where the mask `self` is set, else `f`.
     #[must_use]
     fn blend(self, t: Self, f: Self) -> Self;
+    /// The mask's lanes as bits (lane `l` in bit `l`).
+    #[must_use]
+    fn bits(self) -> u32;
+    /// The mask of the lanes whose bit is set in `bits`.
+    #[must_use]
+    fn mask(bits: u32) -> Self;
 }
 
 macro_rules! pack {
@@ -68,13 +74,11 @@ macro_rules! pack {
             }
             #[inline(always)]
             fn get(&self, l: usize) -> $scalar {
-                self.as_array_ref().get(l).copied().unwrap_or(0.0)
+                self.as_array_ref()[l % $n]
             }
             #[inline(always)]
             fn set(&mut self, l: usize, x: $scalar) {
-                if let Some(slot) = self.as_array_mut().get_mut(l) {
-                    *slot = x;
-                }
+                self.as_array_mut()[l % $n] = x;
             }
             #[inline(always)]
             fn sqrt(self) -> Self {
@@ -99,6 +103,17 @@ macro_rules! pack {
             #[inline(always)]
             fn blend(self, t: Self, f: Self) -> Self {
                 <$pack>::blend(self, t, f)
+            }
+            #[inline(always)]
+            fn bits(self) -> u32 {
+                self.move_mask().cast_unsigned()
+            }
+            #[inline(always)]
+            fn mask(bits: u32) -> Self {
+                let set = <$scalar>::from_bits(!0);
+                <$pack>::new(core::array::from_fn(|l| {
+                    if bits & (1 << l) != 0 { set } else { 0.0 }
+                }))
             }
         }
     };
@@ -212,16 +227,20 @@ pub(crate) fn eval<P: Pack>(f: &Field<P>, y: &States<P>) -> States<P> {
     let rising = y_sq.lt(one);
     let second = !rising & x_sq.lt(one);
     // Both pieces' laws, then the lane's piece's results blended in (4 blends a piece).
-    let law = |a: &[P; 5], k: P, u: P| (k * (a[1] + a[3] * u), a[0] + u * (a[2] + a[4] * u));
     let k2 = f.second * kappa;
     let (rl, rd) = (
         law(&f.rising_lift, kappa, y_sq),
         law(&f.rising_drag, kappa, y_sq),
     );
     let (ql, qd) = (law(&f.second_lift, k2, x_sq), law(&f.second_drag, k2, x_sq));
-    let pick = |r: P, q: P, past: P| rising.blend(r, second.blend(q, past));
-    let (lift_0, lift_1) = (pick(rl.0, ql.0, zero), pick(rl.1, ql.1, f.saturated_lift));
-    let (drag_0, drag_1) = (pick(rd.0, qd.0, zero), pick(rd.1, qd.1, f.saturated_drag));
+    let (lift_0, lift_1) = (
+        pick(rising, second, rl.0, ql.0, zero),
+        pick(rising, second, rl.1, ql.1, f.saturated_lift),
+    );
+    let (drag_0, drag_1) = (
+        pick(rising, second, rd.0, qd.0, zero),
+        pick(rising, second, rd.1, qd.1, f.saturated_drag),
+    );
     let crisis = f.crisis_below / (one + (speed_sq * speed_sq) * (speed_sq * f.crisis_k6));
     let kd = (drag_0 + f.drag_v * speed) + (drag_1 * speed + crisis * speed);
     let kl = lift_0 + lift_1 * speed;
@@ -236,6 +255,21 @@ pub(crate) fn eval<P: Pack>(f: &Field<P>, y: &States<P>) -> States<P> {
         (zero - rz * kd) + cz * kl,
         neg(f.decay * speed) * s,
     ]
+}
+
+/// A spin law's two parts on a piece: `κ'·(α₁ + α₃u²)` and `α₀ + u²·(α₂ + α₄u²)`.
+/// (Functions, not closures, here and in [`pick`]: a closure the compiler outlines would not
+/// get its caller's target features, and its packed intrinsics would become calls.)
+#[inline(always)]
+fn law<P: Pack>(a: &[P; 5], k: P, u: P) -> (P, P) {
+    (k * (a[1] + a[3] * u), a[0] + u * (a[2] + a[4] * u))
+}
+
+/// The rising piece's `r` where `rising`, else the second piece's `q` where `second`, else
+/// `past`.
+#[inline(always)]
+fn pick<P: Pack>(rising: P, second: P, r: P, q: P, past: P) -> P {
+    rising.blend(r, second.blend(q, past))
 }
 
 /// `y + h Σ cⱼ kⱼ` in every lane, each with its own `h` (the scalar `combine`'s order).
@@ -327,8 +361,10 @@ pub(crate) fn step<P: Pack>(
     let y1 = combine(y, h, B, [k1, &k3, &k4, &k5, &k6]);
     let one = P::splat(lit(1.0));
     let zero = P::splat(lit(0.0));
-    let weight: States<P> =
-        core::array::from_fn(|i| one / (atol + rtol * larger(y[i].abs(), y1[i].abs())));
+    let mut weight: States<P> = [zero; 7];
+    for ((w, a), b) in weight.iter_mut().zip(y.iter()).zip(y1.iter()) {
+        *w = one / (atol + rtol * larger(a.abs(), b.abs()));
+    }
     let k7 = eval(f, &y1);
     let e = combine(&[zero; 7], h, E, [k1, &k3, &k4, &k5, &k6, &k7]);
     let mut err = zero;

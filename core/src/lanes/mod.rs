@@ -1,11 +1,12 @@
 //! The lanes kernel (issue 37): many flights advanced together, [`LANES`] at a time, as a
 //! structure of arrays, for batches. Each lane is one shot with its own adaptive step, its
 //! own acceptance, apex and landing; a lane that lands (or fails) is refilled at once with
-//! the next shot, so the lanes stay full until the batch runs out. The force evaluations
-//! and the Runge–Kutta stages run across the lanes in branch-free loops over `[T; N]`
-//! arrays that the compiler vectorises (no SIMD crate: docs/performance.md, "Lanes kernel",
-//! measures plain arrays against the `wide` crate); the step control and the events run
-//! per lane, through the scalar path's own tracker.
+//! the next shot, so the lanes stay full until the batch runs out. The force evaluations,
+//! the Runge–Kutta stages, the error norm, the acceptance test and the step controller run
+//! across the lanes on SIMD packs (`wide`'s, or AVX registers through an [`Avx`] token:
+//! [`fly_each_on`]), the lanes' `t`, `h` and states kept in packs between steps; only a
+//! step with an apex or a landing in it, a refill and a failure are handled lane by lane,
+//! through the scalar path's own tracker (docs/performance.md, "Lanes kernel").
 //!
 //! **What it covers** ([`covers`]): the modern family ([`crate::aero::ModernAero`], the
 //! default `tour2023` and `drives2026`) with every effect on ([`crate::Effects::ALL`]), in
@@ -37,6 +38,8 @@
 //! # Ok::<(), carry_core::Error>(())
 //! ```
 
+#[cfg(target_arch = "x86_64")]
+mod avx;
 #[doc(hidden)]
 pub mod kernel;
 
@@ -48,7 +51,7 @@ use crate::flight::{FlightOutcome, Integrator, MAX_ADAPTIVE_STEPS};
 use crate::integrator::Method;
 use crate::integrator::events::{Landing, Step, Tracker};
 use crate::integrator::integrate::Adaptive;
-use crate::real::{Real, larger, length, lit, smaller};
+use crate::real::{Real, length, lit, smaller};
 use crate::scene::{Effects, PreparedScene};
 use crate::trajectory::Stats;
 use crate::wind::WindField;
@@ -65,14 +68,75 @@ pub trait LaneReal: Real {
     /// The pack.
     #[doc(hidden)]
     type Pack: Pack<Scalar = Self>;
+
+    /// [`fly_each`] on the fastest packs `cpu` allows (the baseline ones without it).
+    #[doc(hidden)]
+    #[inline]
+    fn fly_each_on(
+        cpu: Option<Avx>,
+        shots: &[Shot<'_, Self>],
+        integrator: &Integrator<Self>,
+        sink: &mut dyn FnMut(usize, Result<FlightOutcome<Self>>),
+    ) {
+        let _ = cpu;
+        fly_each_in::<Self::Pack, LANES>(shots, integrator, sink);
+    }
 }
 
 impl LaneReal for f64 {
     type Pack = wide::f64x4;
+
+    #[inline]
+    fn fly_each_on(
+        cpu: Option<Avx>,
+        shots: &[Shot<'_, Self>],
+        integrator: &Integrator<Self>,
+        sink: &mut dyn FnMut(usize, Result<FlightOutcome<Self>>),
+    ) {
+        #[cfg(target_arch = "x86_64")]
+        if let Some(cpu) = cpu {
+            return avx::fly_each(cpu, shots, integrator, sink);
+        }
+        let _ = cpu;
+        fly_each_in::<Self::Pack, LANES>(shots, integrator, sink);
+    }
 }
 
 impl LaneReal for f32 {
     type Pack = wide::f32x4;
+}
+
+/// A proof that the CPU running the program has AVX (x86-64): with it, [`fly_each_on`]
+/// flies `f64` shots on 256-bit packs compiled for AVX whatever the build's baseline (the
+/// `x86-64` baseline has SSE2 only). The core is `no_std` and cannot ask the CPU; a host
+/// makes one after `is_x86_feature_detected!("avx")` (`carry_io::lanes`). On other
+/// architectures it exists but changes nothing.
+#[derive(Debug, Clone, Copy)]
+pub struct Avx(());
+
+impl Avx {
+    /// The token.
+    ///
+    /// # Safety
+    /// The CPU that runs the program must have AVX (and the OS must save its registers):
+    /// what `std::is_x86_feature_detected!("avx")` checks.
+    #[allow(unsafe_code)]
+    #[must_use]
+    pub const unsafe fn new_unchecked() -> Self {
+        Self(())
+    }
+}
+
+/// [`fly_each`] on the fastest packs `cpu` allows: with an [`Avx`] token, `f64` shots fly
+/// on AVX packs (the same results bit for bit; docs/performance.md, "Lanes kernel");
+/// without one, or in `f32`, as [`fly_each`].
+pub fn fly_each_on<T: LaneReal>(
+    cpu: Option<Avx>,
+    shots: &[Shot<'_, T>],
+    integrator: &Integrator<T>,
+    mut sink: impl FnMut(usize, Result<FlightOutcome<T>>),
+) {
+    T::fly_each_on(cpu, shots, integrator, &mut sink);
 }
 
 /// One shot of a batch: the prepared scene it flies through and its launch.
@@ -102,14 +166,27 @@ fn covers_scene<T: Real>(scene: &PreparedScene<T>) -> bool {
 /// the flights end (not the input order). Each result is what [`PreparedScene::fly`]
 /// returns for that shot (without a recorder): an invalid shot gets its own typed error
 /// and the others fly on. No allocation.
+#[inline]
 pub fn fly_each<T: LaneReal>(
     shots: &[Shot<'_, T>],
     integrator: &Integrator<T>,
-    mut sink: impl FnMut(usize, Result<FlightOutcome<T>>),
+    sink: impl FnMut(usize, Result<FlightOutcome<T>>),
 ) {
-    const N: usize = LANES;
+    fly_each_in::<T::Pack, LANES>(shots, integrator, sink);
+}
+
+/// [`fly_each`] on the packs `P`: the whole kernel, inlined into its caller, so that a
+/// caller compiled with more target features (a host's runtime dispatch to AVX2,
+/// `carry_io::lanes`) compiles the kernel with them.
+#[doc(hidden)]
+#[inline(always)]
+pub fn fly_each_in<P: Pack, const N: usize>(
+    shots: &[Shot<'_, P::Scalar>],
+    integrator: &Integrator<P::Scalar>,
+    mut sink: impl FnMut(usize, Result<FlightOutcome<P::Scalar>>),
+) {
     let cfg = match integrator.method() {
-        Ok(Method::Adaptive(cfg)) if T::Pack::LANES == N => cfg,
+        Ok(Method::Adaptive(cfg)) if P::LANES == N => cfg,
         _ => {
             for (i, s) in shots.iter().enumerate() {
                 sink(i, s.scene.fly(&s.launch, integrator, None));
@@ -117,117 +194,194 @@ pub fn fly_each<T: LaneReal>(
             return;
         }
     };
-    let zero = T::Pack::splat(T::zero());
-    let mut run = Run::<T::Pack> {
-        cfg,
-        field: kernel::Field::zero(),
-        y: [zero; 7],
-        k1: [zero; 7],
-        next: 0,
-    };
-    let mut lanes: [Option<Lane<'_, T>>; N] = core::array::from_fn(|_| None);
+    let mut run = Run::<P, N>::new(cfg);
+    // The lanes' states and `k₁` are locals, not `run`'s fields: kept in registers (and
+    // spill slots) rather than in memory, where a blend compiles to a masked store (slow).
+    let zero = P::splat(lit(0.0));
+    let (mut y, mut k1): (States<P>, States<P>) = ([zero; 7], [zero; 7]);
+    let mut lanes: [Option<Lane<'_, P::Scalar>>; N] = core::array::from_fn(|_| None);
     for (l, slot) in lanes.iter_mut().enumerate() {
         *slot = run.refill(l, shots, integrator, &mut sink);
+        place(&mut y, l, slot);
     }
+    let (rtol, atol) = (P::splat(cfg.rtol), P::splat(cfg.atol));
     loop {
-        // Each lane's checks at the top of the scalar loop; a lane that fails is refilled.
-        let (mut any, mut fresh) = (false, false);
-        for (l, slot) in lanes.iter_mut().enumerate() {
-            while let Some(lane) = slot {
-                match lane.check() {
-                    Ok(()) => {
-                        any = true;
-                        fresh |= lane.fresh;
-                        break;
-                    }
-                    Err(e) => {
-                        sink(lane.index, Err(e));
-                        *slot = run.refill(l, shots, integrator, &mut sink);
-                    }
+        // The checks at the top of the scalar step loop, every lane at once; a lane that
+        // fails is refilled (and the new shot checked in the next round).
+        loop {
+            let failed = run.check();
+            if failed == 0 {
+                break;
+            }
+            for (l, slot) in lanes.iter_mut().enumerate() {
+                if failed & (1 << l) != 0
+                    && let Some(lane) = slot.take()
+                {
+                    sink(lane.index, Err(run.failure(l)));
+                    *slot = run.refill(l, shots, integrator, &mut sink);
+                    place(&mut y, l, slot);
                 }
             }
         }
-        if !any {
+        if run.active == 0 {
             return;
         }
-        if fresh {
+        if run.fresh != 0 {
             // `k₁ = f(y₀)` of the lanes just filled (one evaluation of every lane).
-            let k = kernel::eval(&run.field, &run.y);
-            for (l, lane) in lanes.iter_mut().enumerate() {
-                if let Some(lane) = lane.as_mut().filter(|lane| lane.fresh) {
-                    kernel::set_lane(&mut run.k1, l, &kernel::lane(&k, l));
-                    lane.stats.force_evaluations = 1;
-                    lane.fresh = false;
-                }
+            let k = kernel::eval(&run.field, &y);
+            let fresh = P::mask(run.fresh);
+            for (k1, ki) in k1.iter_mut().zip(k.iter()) {
+                *k1 = fresh.blend(*ki, *k1);
             }
+            run.fresh = 0;
         }
-        let mut h = T::Pack::splat(T::one());
-        for (l, lane) in lanes.iter().enumerate() {
-            if let Some(lane) = lane {
-                h.set(l, lane.h);
-            }
-        }
-        let (rtol, atol) = (T::Pack::splat(cfg.rtol), T::Pack::splat(cfg.atol));
-        let st = kernel::step(&run.field, &run.y, &run.k1, h, rtol, atol);
-        for (l, slot) in lanes.iter_mut().enumerate() {
-            let Some(lane) = slot else { continue };
-            let done = run.advance(lane, l, &st);
-            if let Some(result) = done {
-                sink(lane.index, result);
-                *slot = run.refill(l, shots, integrator, &mut sink);
-            }
-        }
+        let st = kernel::step(&run.field, &y, &k1, run.h, rtol, atol);
+        run.advance(
+            &st,
+            (&mut y, &mut k1),
+            &mut lanes,
+            shots,
+            integrator,
+            &mut sink,
+        );
     }
 }
 
-/// The lanes' shared arrays.
-struct Run<P: Pack> {
+/// Writes the start state of the lane just filled into `slot` (if any) into lane `l` of `y`.
+#[inline(always)]
+fn place<P: Pack>(y: &mut States<P>, l: usize, slot: &Option<Lane<'_, P::Scalar>>) {
+    if let Some(lane) = slot {
+        kernel::set_lane(y, l, &lane.start);
+    }
+}
+
+/// The lanes' state, kept in packs between steps (the scalar loop's locals, lane by lane).
+struct Run<P: Pack, const N: usize> {
     cfg: Adaptive<P::Scalar>,
     field: kernel::Field<P>,
-    y: States<P>,
-    k1: States<P>,
+    /// Time `t`, step `h`, the flight's time limit and landing height, and the mask of
+    /// "the last step was rejected".
+    t: P,
+    h: P,
+    time_limit: P,
+    landing_height: P,
+    rejected_last: P,
+    /// Steps tried (accepted or not) and rejected, per lane.
+    attempts: [u32; N],
+    rejected: [u32; N],
+    /// The address of the scene whose field each lane holds (0: none): a shot through the
+    /// lane's last scene sets only its spin axis.
+    scene_of: [usize; N],
+    /// Bit masks of the lanes in flight and of those whose `k₁` is not evaluated yet.
+    active: u32,
+    fresh: u32,
     /// The next shot to start.
     next: usize,
 }
 
-/// One lane's own bookkeeping (the scalar loop's locals).
+/// One lane's own bookkeeping, used at its events only.
 struct Lane<'s, T: Real> {
     index: usize,
     scene: &'s PreparedScene<T>,
     axis: Vector3<T>,
-    t: T,
-    h: T,
-    rejected_last: bool,
     refined: bool,
-    /// `k₁` not evaluated yet.
-    fresh: bool,
-    stats: Stats,
     tracker: Tracker<'s, 's, T>,
+    /// The start state (written into the lanes' states by the caller of `refill`).
+    start: State<T>,
 }
 
-impl<T: Real> Lane<'_, T> {
-    /// The checks at the top of the scalar step loop; clips the step to the time limit.
-    fn check(&mut self) -> Result<()> {
-        if self.stats.steps.saturating_add(self.stats.rejected_steps) >= MAX_ADAPTIVE_STEPS {
-            return Err(Error::StepLimit);
+/// What a lane's events made of its accepted step.
+enum Event<T: Real> {
+    /// Nothing ends the flight: the step is taken.
+    Take,
+    /// A grazing landing: the step is redone with `h·θ` (counted as rejected).
+    Redo(T),
+    /// The flight is over (landed or failed).
+    Done(Result<FlightOutcome<T>>),
+}
+
+/// `x^(−3/16)` by four square roots in every lane (the scalar controller's
+/// `inv_root_3_16`).
+#[inline(always)]
+fn inv_root_3_16<P: Pack>(x: P) -> P {
+    let r8 = x.sqrt().sqrt().sqrt();
+    P::splat(lit(1.0)) / (r8 * r8.sqrt())
+}
+
+/// `smaller(a, b)` of `crate::real` (C's `fmin`) as one blend.
+#[inline(always)]
+fn smaller_p<P: Pack>(a: P, b: P) -> P {
+    (b.lt(a) | a.ne(a)).blend(b, a)
+}
+
+/// `larger(a, b)` of `crate::real` (C's `fmax`) as one blend.
+#[inline(always)]
+fn larger_p<P: Pack>(a: P, b: P) -> P {
+    (a.lt(b) | a.ne(a)).blend(b, a)
+}
+
+impl<T: Real, P: Pack<Scalar = T>, const N: usize> Run<P, N> {
+    fn new(cfg: Adaptive<T>) -> Self {
+        let zero = P::splat(T::zero());
+        Self {
+            cfg,
+            field: kernel::Field::zero(),
+            t: zero,
+            h: P::splat(T::one()),
+            time_limit: P::splat(T::one()),
+            landing_height: zero,
+            rejected_last: zero,
+            attempts: [0; N],
+            rejected: [0; N],
+            scene_of: [0; N],
+            active: 0,
+            fresh: 0,
+            next: 0,
         }
-        let remaining = self.scene.time_limit - self.t;
-        if !(remaining > T::zero()) {
-            return Err(Error::TimeLimit);
-        }
-        self.h = smaller(self.h, remaining);
-        Ok(())
     }
-}
 
-/// `x^(−3/16)` by four square roots (the scalar controller's `inv_root_3_16`).
-#[inline]
-fn inv_root_3_16<T: Real>(x: T) -> T {
-    let r8 = x.root().root().root();
-    T::one() / (r8 * r8.root())
-}
+    /// The checks at the top of the scalar step loop (the step limit, the time limit) in
+    /// every lane, and the step clipped to the time left: the mask of the lanes that fail.
+    #[inline(always)]
+    fn check(&mut self) -> u32 {
+        let remaining = self.time_limit - self.t;
+        let mut failed = !P::splat(T::zero()).lt(remaining).bits();
+        for (l, a) in self.attempts.iter().enumerate() {
+            if *a >= MAX_ADAPTIVE_STEPS {
+                failed |= 1 << l;
+            }
+        }
+        // (Neither is NaN in a lane in flight: the scalar path's `below`.)
+        self.h = remaining.lt(self.h).blend(remaining, self.h);
+        failed & self.active
+    }
 
-impl<T: Real, P: Pack<Scalar = T>> Run<P> {
+    /// The error of lane `l` that failed [`Run::check`].
+    fn failure(&self, l: usize) -> Error {
+        if self
+            .attempts
+            .get(l)
+            .is_some_and(|a| *a >= MAX_ADAPTIVE_STEPS)
+        {
+            Error::StepLimit
+        } else {
+            Error::TimeLimit
+        }
+    }
+
+    /// Lane `l`'s step counts as the scalar path's [`Stats`].
+    fn stats(&self, l: usize) -> Stats {
+        let (a, r) = (
+            self.attempts.get(l).copied().unwrap_or(0),
+            self.rejected.get(l).copied().unwrap_or(0),
+        );
+        Stats {
+            steps: a.saturating_sub(r),
+            rejected_steps: r,
+            force_evaluations: a.saturating_mul(6).saturating_add(1),
+        }
+    }
+
     /// The next shot the kernel covers into lane `l` (the others fly on the scalar path,
     /// and invalid ones get their error, on the way), or `None` when the shots are done.
     fn refill<'s>(
@@ -237,6 +391,7 @@ impl<T: Real, P: Pack<Scalar = T>> Run<P> {
         integrator: &Integrator<T>,
         sink: &mut impl FnMut(usize, Result<FlightOutcome<T>>),
     ) -> Option<Lane<'s, T>> {
+        let bit = 1u32 << l;
         while let Some(shot) = shots.get(self.next) {
             let index = self.next;
             self.next = self.next.saturating_add(1);
@@ -246,22 +401,32 @@ impl<T: Real, P: Pack<Scalar = T>> Run<P> {
             }
             match self.start(l, shot) {
                 Ok((y0, axis)) => {
+                    self.t.set(l, T::zero());
+                    self.h
+                        .set(l, smaller(self.cfg.initial_step, self.cfg.max_step));
+                    self.time_limit.set(l, shot.scene.time_limit);
+                    self.landing_height.set(l, shot.scene.landing_height);
+                    self.rejected_last.set(l, T::zero());
+                    if let (Some(a), Some(r)) = (self.attempts.get_mut(l), self.rejected.get_mut(l))
+                    {
+                        (*a, *r) = (0, 0);
+                    }
+                    self.active |= bit;
+                    self.fresh |= bit;
                     return Some(Lane {
                         index,
                         scene: shot.scene,
                         axis,
-                        t: T::zero(),
-                        h: smaller(self.cfg.initial_step, self.cfg.max_step),
-                        rejected_last: false,
                         refined: false,
-                        fresh: true,
-                        stats: Stats::default(),
                         tracker: Tracker::new(shot.scene.landing_height, &y0, axis, None),
+                        start: y0,
                     });
                 }
                 Err(e) => sink(index, Err(e)),
             }
         }
+        self.active &= !bit;
+        self.fresh &= !bit;
         None
     }
 
@@ -275,12 +440,20 @@ impl<T: Real, P: Pack<Scalar = T>> Run<P> {
             return Err(Error::NoLanding);
         }
         self.set_field(l, scene, &axis);
-        kernel::set_lane(&mut self.y, l, &y0);
         Ok((y0, axis))
     }
 
     /// Lane `l` of the force field: `scene`'s (a covered scene) with the spin axis `axis`.
     fn set_field(&mut self, l: usize, scene: &PreparedScene<T>, axis: &Vector3<T>) {
+        for k in 0..3 {
+            self.field.axis[k].set(l, axis[k]);
+        }
+        // (Shots in one call borrow their scenes for the whole call: one address, one scene.)
+        let address = core::ptr::from_ref(scene).addr();
+        match self.scene_of.get_mut(l) {
+            Some(a) if *a != address => *a = address,
+            _ => return,
+        }
         let Forces::Modern {
             drag_v,
             crisis,
@@ -298,7 +471,6 @@ impl<T: Real, P: Pack<Scalar = T>> Run<P> {
         put(&mut f.minus_gravity, -scene.field.gravity);
         for k in 0..3 {
             put(&mut f.wind[k], wind[k]);
-            put(&mut f.axis[k], axis[k]);
         }
         put(&mut f.decay, scene.field.aero.decay);
         put(&mut f.drag_v, drag_v);
@@ -317,94 +489,165 @@ impl<T: Real, P: Pack<Scalar = T>> Run<P> {
         }
     }
 
-    /// Lane `l`'s part of the scalar loop after the step's stages: acceptance, the grazing
-    /// landing's redone step, the apex and landing, the step size. `Some` when the flight
-    /// is over (landed or failed).
-    fn advance(
+    /// The scalar loop after the step's stages, every lane at once: acceptance, the step
+    /// size, `t`, `y`, `k₁`. Only a lane with an apex or a landing in its accepted step
+    /// (or a grazing landing to redo), and a lane that fails, is handled on its own.
+    #[inline(always)]
+    fn advance<'s>(
         &mut self,
+        st: &kernel::Stages<P>,
+        (y, k1): (&mut States<P>, &mut States<P>),
+        lanes: &mut [Option<Lane<'s, T>>; N],
+        shots: &[Shot<'s, T>],
+        integrator: &Integrator<T>,
+        sink: &mut impl FnMut(usize, Result<FlightOutcome<T>>),
+    ) {
+        let zero = P::splat(T::zero());
+        let one = P::splat(T::one());
+        let (safety, grow, shrink) = (P::splat(lit(0.9)), P::splat(lit(5.0)), P::splat(lit(0.2)));
+        let active = self.active;
+        for (l, a) in self.attempts.iter_mut().enumerate() {
+            if active & (1 << l) != 0 {
+                *a = a.saturating_add(1);
+            }
+        }
+        // `err ≤ 1` and a finite `y₁` (`|x| < ∞` is false for ±∞ and NaN).
+        let inf = P::splat(lit(f64::INFINITY));
+        let mut ok = st.err.le(one);
+        for x in &st.y1 {
+            ok = ok & x.abs().lt(inf);
+        }
+        // Only a step with an apex or a landing in it (or a grazing landing to redo)
+        // needs the tracker: without them it changes nothing and finds nothing.
+        let event = ok & ((zero.lt(y[VY]) & st.y1[VY].le(zero)) | st.y1[Y].le(self.landing_height));
+        let accepted = ok.bits() & active;
+        let events = event.bits() & active;
+        let rejected = active & !accepted;
+        let mut take = accepted & !events;
+        if events != 0 {
+            for (l, slot) in lanes.iter_mut().enumerate() {
+                if events & (1 << l) == 0 {
+                    continue;
+                }
+                let Some(lane) = slot else { continue };
+                let (y0, f0) = (kernel::lane(y, l), kernel::lane(k1, l));
+                match self.event(lane, l, st, &y0, &f0) {
+                    Event::Take => take |= 1 << l,
+                    Event::Redo(th) => {
+                        if let Some(r) = self.rejected.get_mut(l) {
+                            *r = r.saturating_add(1);
+                        }
+                        self.h.set(l, self.h.get(l) * th);
+                    }
+                    Event::Done(result) => {
+                        sink(lane.index, result);
+                        *slot = self.refill(l, shots, integrator, sink);
+                        place(y, l, slot);
+                    }
+                }
+            }
+        }
+        // The controller (`integrate::dormand_prince`): an accepted step grows `h` by
+        // `min(0.9·err^(−3/16), 5)` (at most 1 after a rejection), at least 0.2, to at most
+        // `max_step`; a rejected one shrinks it by `max(0.9·err^(−3/16), 0.2)`, at most 0.9
+        // (0.2 for a NaN error).
+        let ir = safety * inv_root_3_16(st.err);
+        let (tk, rj) = (P::mask(take), P::mask(rejected));
+        let mut grown = zero.lt(st.err).blend(grow.lt(ir).blend(grow, ir), grow);
+        grown = self
+            .rejected_last
+            .blend(one.lt(grown).blend(one, grown), grown);
+        let h_take = self.h * grown.lt(shrink).blend(shrink, grown);
+        let max_step = P::splat(self.cfg.max_step);
+        let h_take = max_step.lt(h_take).blend(max_step, h_take);
+        let finite = st.err.abs().lt(inf);
+        let shrunk = finite.blend(larger_p(ir, shrink), shrink);
+        let h_reject = self.h * smaller_p(shrunk, safety);
+        let h0 = self.h;
+        self.h = tk.blend(h_take, rj.blend(h_reject, h0));
+        self.t = tk.blend(self.t + h0, self.t);
+        for (y, y1) in y.iter_mut().zip(st.y1.iter()) {
+            *y = tk.blend(*y1, *y);
+        }
+        for (k1, k7) in k1.iter_mut().zip(st.k7.iter()) {
+            *k1 = tk.blend(*k7, *k1);
+        }
+        self.rejected_last = (rj | self.rejected_last) & !tk;
+        if rejected != 0 {
+            for (l, r) in self.rejected.iter_mut().enumerate() {
+                if rejected & (1 << l) != 0 {
+                    *r = r.saturating_add(1);
+                }
+            }
+            let eps16 = P::splat(T::default_epsilon() * lit(16.0));
+            let floor = eps16 * larger_p(self.t, one);
+            let under = !floor.lt(self.h).bits() & rejected;
+            if under != 0 {
+                for (l, slot) in lanes.iter_mut().enumerate() {
+                    if under & (1 << l) != 0
+                        && let Some(lane) = slot.take()
+                    {
+                        sink(lane.index, Err(Error::StepSizeUnderflow));
+                        *slot = self.refill(l, shots, integrator, sink);
+                        place(y, l, slot);
+                    }
+                }
+            }
+        }
+    }
+
+    /// Lane `l`'s events in its accepted step (the scalar loop's tracker calls): the
+    /// grazing landing's redone step, the apex, the landing.
+    fn event(
+        &self,
         lane: &mut Lane<'_, T>,
         l: usize,
         st: &kernel::Stages<P>,
-    ) -> Option<Result<FlightOutcome<T>>> {
-        let cfg = &self.cfg;
-        let (safety, grow, shrink) = (lit::<T>(0.9), lit::<T>(5.0), lit::<T>(0.2));
-        lane.stats.force_evaluations = lane.stats.force_evaluations.saturating_add(6);
-        let err = st.err.get(l);
+        y0: &State<T>,
+        f0: &State<T>,
+    ) -> Event<T> {
+        let (h, t) = (self.h.get(l), self.t.get(l));
         let y1 = kernel::lane(&st.y1, l);
-        if err <= T::one() && y1.iter().all(|x| x.is_finite()) {
-            let hl = lane.scene.landing_height;
-            let y0 = kernel::lane(&self.y, l);
-            // Only a step with an apex or a landing in it (or a grazing landing to redo)
-            // needs the tracker: without them it changes nothing and finds nothing.
-            if (y0[VY] > T::zero() && y1[VY] <= T::zero()) || y1[Y] <= hl {
-                let (k1, k7) = (kernel::lane(&self.k1, l), kernel::lane(&st.k7, l));
-                let (k3, k4) = (kernel::lane(&st.k3, l), kernel::lane(&st.k4, l));
-                let (k5, k6) = (kernel::lane(&st.k5, l), kernel::lane(&st.k6, l));
-                let step = Step {
-                    h: lane.h,
-                    y0: &y0,
-                    y1: &y1,
-                    f0: &k1,
-                    f1: &k7,
-                    mid: Some([&k3, &k4, &k5, &k6]),
-                };
-                let refine = if !lane.refined && lane.tracker.ends_below(&step) {
-                    lane.tracker.grazing_landing(&step)
-                } else {
-                    None
-                };
-                if let Some(th) = refine {
-                    lane.refined = true;
-                    if th < T::one() && th > T::zero() {
-                        lane.stats.rejected_steps = lane.stats.rejected_steps.saturating_add(1);
-                        lane.h *= th;
-                        return None;
-                    }
-                }
-                lane.stats.steps = lane.stats.steps.saturating_add(1);
-                match lane.tracker.on_step(lane.t, &step) {
-                    Err(e) => return Some(Err(e)),
-                    Ok(Some(th)) => {
-                        return Some(outcome(lane, &Landing::in_step(lane.t, th, &step)));
-                    }
-                    Ok(None) => {}
-                }
-            } else {
-                lane.stats.steps = lane.stats.steps.saturating_add(1);
-            }
-            lane.t += lane.h;
-            kernel::set_lane(&mut self.y, l, &y1);
-            kernel::set_lane(&mut self.k1, l, &kernel::lane(&st.k7, l));
-            let mut factor = if err > T::zero() {
-                smaller(safety * inv_root_3_16(err), grow)
-            } else {
-                grow
-            };
-            if lane.rejected_last {
-                factor = smaller(factor, T::one());
-            }
-            lane.h = smaller(lane.h * larger(factor, shrink), cfg.max_step);
-            lane.rejected_last = false;
+        let k7 = kernel::lane(&st.k7, l);
+        let (k3, k4) = (kernel::lane(&st.k3, l), kernel::lane(&st.k4, l));
+        let (k5, k6) = (kernel::lane(&st.k5, l), kernel::lane(&st.k6, l));
+        let step = Step {
+            h,
+            y0,
+            y1: &y1,
+            f0,
+            f1: &k7,
+            mid: Some([&k3, &k4, &k5, &k6]),
+        };
+        let refine = if !lane.refined && lane.tracker.ends_below(&step) {
+            lane.tracker.grazing_landing(&step)
         } else {
-            lane.stats.rejected_steps = lane.stats.rejected_steps.saturating_add(1);
-            let factor = if err.is_finite() {
-                larger(safety * inv_root_3_16(err), shrink)
-            } else {
-                shrink
-            };
-            lane.h *= smaller(factor, safety);
-            lane.rejected_last = true;
-            let eps16 = T::default_epsilon() * lit(16.0);
-            if !(lane.h > eps16 * larger(lane.t, T::one())) {
-                return Some(Err(Error::StepSizeUnderflow));
+            None
+        };
+        if let Some(th) = refine {
+            lane.refined = true;
+            if th < T::one() && th > T::zero() {
+                return Event::Redo(th);
             }
         }
-        None
+        match lane.tracker.on_step(t, &step) {
+            Err(e) => Event::Done(Err(e)),
+            Ok(Some(th)) => Event::Done(outcome(
+                lane,
+                &Landing::in_step(t, th, &step),
+                self.stats(l),
+            )),
+            Ok(None) => Event::Take,
+        }
     }
 }
 
 /// The flight's outcome from its landing (`flight::run`'s end, without a ground).
-fn outcome<T: Real>(lane: &Lane<'_, T>, landing: &Landing<T>) -> Result<FlightOutcome<T>> {
+fn outcome<T: Real>(
+    lane: &Lane<'_, T>,
+    landing: &Landing<T>,
+    stats: Stats,
+) -> Result<FlightOutcome<T>> {
     let scene = lane.scene;
     let tracker = &lane.tracker;
     let (apex_m, apex_time_s) = (tracker.apex_height, tracker.apex_time);
@@ -439,7 +682,7 @@ fn outcome<T: Real>(lane: &Lane<'_, T>, landing: &Landing<T>) -> Result<FlightOu
         landing_velocity_mps: velocity,
         landing_spin_vector_radps: lane.axis * spin,
         air_density_kgm3: scene.density,
-        stats: lane.stats,
+        stats,
         recording_full: false,
         ground: None,
     })

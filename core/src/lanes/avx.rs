@@ -1,0 +1,165 @@
+//! The lanes kernel in `f64` on AVX (x86-64), for hosts that check the CPU at run time
+//! ([`super::Avx`]): the kernel's packs as one 256-bit register (`__m256d`) of four `f64`
+//! lanes, the whole kernel compiled with `#[target_feature(enable = "avx")]`.
+//!
+//! Why not `wide` here: `wide::f64x4` picks its representation when the crate is compiled
+//! (`cfg(target_feature = "avx")`), so on a baseline x86-64 build it is two SSE2 registers
+//! whatever the calling function enables; inlined into an AVX function it becomes VEX-encoded
+//! 128-bit code (measured: 9.3 k instructions a shot against 6.2 k for a whole
+//! `-C target-cpu=x86-64-v3` build; docs/performance.md, "Lanes kernel"). This pack is the
+//! AVX representation whatever the build's baseline.
+//!
+//! The arithmetic is IEEE 754's (`vaddpd`, `vmulpd`, `vdivpd`, `vsqrtpd`: correctly rounded,
+//! as the scalar `addsd`…`sqrtsd`), no fused multiply–add (AVX has none; FMA is not
+//! enabled), so a lane is the scalar path's bit for bit, as with `wide`.
+//!
+//! Soundness: [`F64x4`] is private; a value of it exists only inside [`fly`], a
+//! `#[target_feature(enable = "avx")]` function that [`fly_each`] calls only with an
+//! [`Avx`] token, whose constructor requires the caller to have checked the CPU. Every
+//! intrinsic below therefore runs on a CPU with AVX.
+#![allow(unsafe_code)]
+
+use super::{Avx, Shot, fly_each_in, kernel::Pack};
+use crate::error::Result;
+use crate::flight::{FlightOutcome, Integrator};
+use core::arch::x86_64::{
+    __m256d, _CMP_LE_OQ, _CMP_LT_OQ, _CMP_NEQ_UQ, _mm256_add_pd, _mm256_and_pd, _mm256_andnot_pd,
+    _mm256_blendv_pd, _mm256_cmp_pd, _mm256_div_pd, _mm256_movemask_pd, _mm256_mul_pd,
+    _mm256_or_pd, _mm256_set1_pd, _mm256_sqrt_pd, _mm256_sub_pd, _mm256_xor_pd,
+};
+use core::ops::{Add, BitAnd, BitOr, BitXor, Div, Mul, Not, Sub};
+
+/// Flies `shots` as [`super::fly_each`] does, on AVX packs.
+pub(super) fn fly_each(
+    _cpu: Avx,
+    shots: &[Shot<'_, f64>],
+    integrator: &Integrator<f64>,
+    sink: &mut dyn FnMut(usize, Result<FlightOutcome<f64>>),
+) {
+    // SAFETY: the token exists only where its creator checked that the CPU has AVX
+    // (`Avx::new_unchecked`'s contract), which is what `fly` requires.
+    unsafe { fly(shots, integrator, sink) }
+}
+
+/// The kernel on [`F64x4`], compiled for AVX.
+#[target_feature(enable = "avx")]
+fn fly(
+    shots: &[Shot<'_, f64>],
+    integrator: &Integrator<f64>,
+    sink: &mut dyn FnMut(usize, Result<FlightOutcome<f64>>),
+) {
+    fly_each_in::<F64x4, 4>(shots, integrator, sink);
+}
+
+/// Four `f64` lanes in one AVX register (only ever created inside [`fly`]).
+#[derive(Clone, Copy)]
+struct F64x4(__m256d);
+
+/// Every method below runs one AVX intrinsic on values of [`F64x4`], which exist only
+/// inside [`fly`] (AVX present: the module's soundness note).
+macro_rules! avx {
+    ($e:expr) => {
+        // SAFETY: an `F64x4` exists only inside `fly`, which runs only on a CPU with AVX
+        // (the module's soundness note); the intrinsic has no other precondition.
+        unsafe { $e }
+    };
+}
+
+macro_rules! op {
+    ($tr:ident, $f:ident, $intr:ident) => {
+        impl $tr for F64x4 {
+            type Output = Self;
+            #[inline(always)]
+            fn $f(self, o: Self) -> Self {
+                Self(avx!($intr(self.0, o.0)))
+            }
+        }
+    };
+}
+op!(Add, add, _mm256_add_pd);
+op!(Sub, sub, _mm256_sub_pd);
+op!(Mul, mul, _mm256_mul_pd);
+op!(Div, div, _mm256_div_pd);
+op!(BitAnd, bitand, _mm256_and_pd);
+op!(BitOr, bitor, _mm256_or_pd);
+op!(BitXor, bitxor, _mm256_xor_pd);
+
+impl Not for F64x4 {
+    type Output = Self;
+    #[inline(always)]
+    fn not(self) -> Self {
+        self ^ Self(avx!(_mm256_set1_pd(f64::from_bits(!0))))
+    }
+}
+
+impl F64x4 {
+    /// The lanes as an array.
+    #[inline(always)]
+    fn to_array(self) -> [f64; 4] {
+        // SAFETY: `__m256d` and `[f64; 4]` have the same size, and every bit pattern is
+        // valid for both.
+        unsafe { core::mem::transmute::<__m256d, [f64; 4]>(self.0) }
+    }
+
+    /// The pack of an array.
+    #[inline(always)]
+    fn from_array(a: [f64; 4]) -> Self {
+        // SAFETY: as in `to_array`.
+        Self(unsafe { core::mem::transmute::<[f64; 4], __m256d>(a) })
+    }
+}
+
+impl Pack for F64x4 {
+    type Scalar = f64;
+    const LANES: usize = 4;
+    #[inline(always)]
+    fn splat(x: f64) -> Self {
+        Self(avx!(_mm256_set1_pd(x)))
+    }
+    #[inline(always)]
+    fn get(&self, l: usize) -> f64 {
+        self.to_array()[l % 4]
+    }
+    #[inline(always)]
+    fn set(&mut self, l: usize, x: f64) {
+        let mut a = self.to_array();
+        a[l % 4] = x;
+        *self = Self::from_array(a);
+    }
+    #[inline(always)]
+    fn sqrt(self) -> Self {
+        Self(avx!(_mm256_sqrt_pd(self.0)))
+    }
+    #[inline(always)]
+    fn abs(self) -> Self {
+        Self(avx!(_mm256_andnot_pd(_mm256_set1_pd(-0.0), self.0)))
+    }
+    #[inline(always)]
+    fn lt(self, o: Self) -> Self {
+        Self(avx!(_mm256_cmp_pd::<_CMP_LT_OQ>(self.0, o.0)))
+    }
+    #[inline(always)]
+    fn le(self, o: Self) -> Self {
+        Self(avx!(_mm256_cmp_pd::<_CMP_LE_OQ>(self.0, o.0)))
+    }
+    #[inline(always)]
+    fn ne(self, o: Self) -> Self {
+        // Unordered: true where either is NaN (IEEE `!=`, as SSE2's `cmpneqpd`).
+        Self(avx!(_mm256_cmp_pd::<_CMP_NEQ_UQ>(self.0, o.0)))
+    }
+    #[inline(always)]
+    fn blend(self, t: Self, f: Self) -> Self {
+        Self(avx!(_mm256_blendv_pd(f.0, t.0, self.0)))
+    }
+    #[inline(always)]
+    fn bits(self) -> u32 {
+        avx!(_mm256_movemask_pd(self.0)).cast_unsigned()
+    }
+    #[inline(always)]
+    fn mask(bits: u32) -> Self {
+        let set = f64::from_bits(!0);
+        Self::from_array(core::array::from_fn(|l| {
+            if bits & (1 << l) != 0 { set } else { 0.0 }
+        }))
+    }
+}

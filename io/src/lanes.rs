@@ -1,0 +1,34 @@
+//! The core's lanes kernel ([`carry_core::lanes`], issue 37) on the fastest packs this CPU
+//! has: the host's runtime dispatch. The core is `no_std` and cannot ask the CPU; here
+//! `std` checks it once (`is_x86_feature_detected!`, cached by `std`) and hands the core an
+//! [`Avx`] token where the CPU has AVX, so `f64` batches fly on 256-bit packs compiled for
+//! AVX even in a baseline x86-64 build (which has SSE2 only). The results are the same bit
+//! for bit (docs/performance.md, "Lanes kernel"). `carry batch`, the Python package and
+//! the Dask example reach the kernel through [`crate::compute::run_rows`], which calls
+//! [`fly_each`].
+
+use carry_core::lanes::{self, Avx, LaneReal, Shot};
+use carry_core::{FlightOutcome, Integrator, Result};
+
+/// The AVX token where the CPU running this program has AVX (x86-64), else `None`.
+#[must_use]
+pub fn cpu() -> Option<Avx> {
+    #[cfg(target_arch = "x86_64")]
+    if std::is_x86_feature_detected!("avx") {
+        // SAFETY: `Avx::new_unchecked` requires a CPU (and OS) with AVX, which
+        // `is_x86_feature_detected!("avx")` has just confirmed.
+        #[allow(unsafe_code)]
+        return Some(unsafe { Avx::new_unchecked() });
+    }
+    None
+}
+
+/// [`carry_core::lanes::fly_each`] on the fastest packs of this CPU ([`cpu`]); the same
+/// results, each handed to `sink` with its shot's index.
+pub fn fly_each<T: LaneReal>(
+    shots: &[Shot<'_, T>],
+    integrator: &Integrator<T>,
+    sink: impl FnMut(usize, Result<FlightOutcome<T>>),
+) {
+    lanes::fly_each_on(cpu(), shots, integrator, sink);
+}
