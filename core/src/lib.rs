@@ -26,7 +26,8 @@
 //! Every public entry point validates its inputs once and returns a typed
 //! [`Error`]; nothing panics or returns NaN.
 #![no_std]
-// One `unsafe` block in the crate: the FPU's square root on hard-float ARM (`real.rs`).
+// `unsafe` in two places only: the FPU's square root on hard-float ARM (`real.rs`) and the
+// lanes kernel's AVX packs on x86-64 (`lanes/avx.rs`: intrinsics behind a CPU-checked token).
 #![deny(unsafe_code)]
 
 pub mod ball;
