@@ -1,5 +1,7 @@
 //! Fuzz the flight entry points: launch → ball motion, scene preparation (density, weather,
 //! wind, aerodynamic model and coefficients), and every integrator, in f32 and f64. A success must be finite and physical.
+//! On a flag the same shot also flies through the lanes kernel (`carry_io::lanes`, the
+//! batch path), which must agree with the scalar path bit for bit.
 //!
 //! The only inputs bounded beyond validation are the *work* a flight may take: a fixed
 //! step or a maximum adaptive step below `time limit / 2e5` would take more than 2e5 steps
@@ -10,9 +12,11 @@
 
 use carry_core::aero::{AeroModel, LinearAero, ModernAero};
 use carry_core::air::{Air, Pressure, Weather};
+use carry_core::ball::BallMotion;
 use carry_core::flight::{Integrator, Recorder, Sample};
+use carry_core::lanes::{LaneReal, Shot};
 use carry_core::real::{lit, to_f64};
-use carry_core::scene::{Effects, Scene};
+use carry_core::scene::{Effects, PreparedScene, Scene};
 use carry_core::wind::Wind;
 use carry_core::{Ball, Error, Launch, Real, Result};
 use carry_fuzz::Bytes;
@@ -25,7 +29,7 @@ fn v<T: Real>(a: [f64; 3]) -> Vector3<T> {
 
 const MAX_STEPS: f64 = 2e5;
 
-fn run<T: Real>(b: &mut Bytes<'_>) -> Result<()> {
+fn run<T: LaneReal>(b: &mut Bytes<'_>) -> Result<()> {
     let ball = Ball::<T>::new(lit(b.param(0.01, 0.1)), lit(b.param(0.01, 0.05)))?;
     let launch = Launch::<T> {
         ball_speed_mps: lit(b.param(0.0, 150.0)),
@@ -150,6 +154,9 @@ fn run<T: Real>(b: &mut Bytes<'_>) -> Result<()> {
     if std::env::var_os("CARRY_FUZZ_DEBUG").is_some() {
         eprintln!("{ball:?}\n{motion:?}\n{scene:?}\n{integrator:?}");
     }
+    if b.flag() {
+        lanes_agree(&prepared, &motion, &integrator);
+    }
     let out = match prepared.fly(&motion, &integrator, recorder.as_mut()) {
         Ok(out) => out,
         Err(
@@ -206,6 +213,30 @@ fn run<T: Real>(b: &mut Bytes<'_>) -> Result<()> {
         }
     }
     Ok(())
+}
+
+/// The lanes kernel (issue 37; on this CPU's packs, AVX where it has it, as `carry batch`
+/// flies) gives every shot of a batch the scalar path's result, bit for bit, error or not.
+fn lanes_agree<T: LaneReal>(
+    scene: &PreparedScene<T>,
+    motion: &BallMotion<T>,
+    integrator: &Integrator<T>,
+) {
+    let scalar = scene.fly(motion, integrator, None);
+    let shot = Shot {
+        scene,
+        launch: *motion,
+    };
+    let shots = [shot; 3];
+    let mut flown = 0;
+    carry_io::lanes::fly_each(&shots, integrator, |i, lane| {
+        flown += 1;
+        assert!(
+            lane == scalar,
+            "lane {i} differs from the scalar path: {lane:?} against {scalar:?}"
+        );
+    });
+    assert_eq!(flown, shots.len());
 }
 
 fuzz_target!(|data: &[u8]| {
