@@ -17,6 +17,7 @@
 //! # turn, the refit linearised at the default (one Gauss–Newton step, warm start), the row
 //! # flown with the refit; --solve=I,J also refits rows I, J (0-based) in full (~1 min each):
 //! cargo run --release -p carry-lab --example spin_shape -- loo --sigma-data --carry-sigma=0.01 --spin-sigma=0.03
+//! # another model than the default (nine coefficients, e.g. a `cv --full` fit): --start=A,B,…
 //! ```
 
 use carry_core::Scene;
@@ -316,6 +317,8 @@ struct Options {
     full: bool,
     weight: f64,
     bounds: Vec<(usize, f64, f64)>,
+    /// `loo`'s model (the modern family's nine coefficients; default `drives2026`).
+    start: Option<Vec<f64>>,
 }
 
 fn training(
@@ -499,7 +502,10 @@ fn loo(all: &[DriveRow], shots: &[Shot], o: &Options, solve_rows: &[usize]) {
     );
     let premium = screened(&premium, &reference);
     let by_index: HashMap<usize, &Shot> = shots.iter().map(|s| (s.index, s)).collect();
-    let model = AeroModel::drives_2026();
+    let model = o
+        .start
+        .as_ref()
+        .map_or_else(AeroModel::drives_2026, |p| AeroFamily::Modern.model(p));
     let p0 = AeroFamily::Modern.parameters(&model).unwrap_or_default();
     let problem = problem_of(o, &p0);
     let rows = training(&premium, &by_index, &tables, &model, None);
@@ -669,6 +675,8 @@ fn main() {
                         (v[0] as usize, v[1], v[2])
                     })
                     .collect(),
+                start: value("--start=")
+                    .map(|v| v.split(',').map(|x| x.parse().unwrap()).collect()),
             };
             if mode == "cv" {
                 cv(&all, &shots, &o);

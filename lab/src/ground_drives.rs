@@ -383,7 +383,7 @@ pub fn fit_cost(rows: &[Landing], model_m: &[f64]) -> f64 {
 /// Nelder–Mead on `f` over `x` in the box `bounds`, in logarithms (each coefficient
 /// scaled by its own size), `iterations` steps from `start`.
 #[allow(clippy::needless_range_loop)] // several arrays indexed alike
-fn nelder_mead<const N: usize>(
+pub(crate) fn nelder_mead<const N: usize>(
     start: [f64; N],
     bounds: &[(f64, f64); N],
     iterations: usize,

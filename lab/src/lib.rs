@@ -34,6 +34,7 @@ pub mod error;
 pub mod fit;
 pub mod ground_drives;
 pub mod ground_fit;
+pub mod ground_joint;
 pub mod launch_drives;
 pub mod launch_fit;
 pub mod normalize;
