@@ -12,22 +12,9 @@ use carry_core::ground::{CraterLaw, Surface, Turf};
 use carry_lab::drives;
 use carry_lab::ground_drives::{self as gd, BandFigures, Landing};
 use carry_lab::ground_fit::{
-    ChartRow, RollRow, calibrate_fairway, chart_scene, mean_abs, parse_chart,
+    ChartRow, RollRow, calibrate_fairway, chart_scene, mean_abs, parse_chart, turf_line,
 };
 use carry_lab::ground_joint::{self as gj, CHART_WEIGHT};
-
-fn turf_line(t: &Turf<f64>) -> String {
-    format!(
-        "{:?}: e0 {:.3}, mu {:.3}, rho0 {:.4}, kappa {:.3}, v_f {:.2} m/s, c {:.4} s2/m2",
-        t.crater_law,
-        t.restitution,
-        t.friction,
-        t.rolling_resistance,
-        t.crater_scale,
-        t.crater_fade_mps,
-        t.grass_drag_s2pm2
-    )
-}
 
 /// Roll bands, total and topped (TrackMan carry + model roll) of `rows` with rolls `m`.
 fn drive_figures(name: &str, rows: &[Landing], m: &[f64]) {

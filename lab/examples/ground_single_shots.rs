@@ -20,7 +20,7 @@ use carry_core::units::{deg, rpm};
 use carry_core::{Integrator, Launch};
 use carry_lab::drives;
 use carry_lab::ground_drives::{self as gd, BANDS, BandFigures, Landing};
-use carry_lab::ground_fit::{YARD_M, chart_scene, mean_abs, parse_chart, roll_rows};
+use carry_lab::ground_fit::{YARD_M, chart_scene, mean_abs, parse_chart, roll_rows, turf_line};
 
 /// The seed's firm fairway (issue 21: the 2010 chart's ρ₀ with Penner's bounce).
 const SEED_FAIRWAY: Turf<f64> = Turf {
@@ -65,19 +65,6 @@ fn band_name(i: usize) -> String {
 
 fn cell(b: &BandFigures) -> String {
     format!("{:5.1} ({:+5.1})", b.mean_abs_yd, b.bias_yd)
-}
-
-fn turf_line(t: &Turf<f64>) -> String {
-    format!(
-        "{:?}: e0 {:.3}, mu {:.3}, rho0 {:.4}, kappa {:.3}, v_f {:.2} m/s, c {:.4} s2/m2",
-        t.crater_law,
-        t.restitution,
-        t.friction,
-        t.rolling_resistance,
-        t.crater_scale,
-        t.crater_fade_mps,
-        t.grass_drag_s2pm2
-    )
 }
 
 /// Total errors (mean |rel|, bias) as "a % (b %)".

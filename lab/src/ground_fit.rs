@@ -153,6 +153,21 @@ pub fn roll_rows(rows: &[ChartRow], scene: &Scene<f64>) -> Result<Vec<RollRow>, 
         .collect()
 }
 
+/// One line with a turf's coefficients (the ground examples' reports).
+#[must_use]
+pub fn turf_line(t: &Turf<f64>) -> String {
+    format!(
+        "{:?}: e0 {:.3}, mu {:.3}, rho0 {:.4}, kappa {:.3}, v_f {:.2} m/s, c {:.4} s2/m2",
+        t.crater_law,
+        t.restitution,
+        t.friction,
+        t.rolling_resistance,
+        t.crater_scale,
+        t.crater_fade_mps,
+        t.grass_drag_s2pm2
+    )
+}
+
 /// Mean absolute value.
 #[must_use]
 pub fn mean_abs(x: impl Iterator<Item = f64>) -> f64 {
