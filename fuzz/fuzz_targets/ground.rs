@@ -73,15 +73,37 @@ fn run<T: Real>(b: &mut Bytes<'_>) -> Result<()> {
         let vel: Vector3<T> = v(b.vec3(-80.0, 80.0));
         let spin: Vector3<T> = v(b.vec3(-1500.0, 1500.0));
         let r = g.bounce(&vel, &spin)?;
-        let energy = |v: &Vector3<T>, w: &Vector3<T>| {
-            to_f64(ball.mass_kg()) * to_f64(v.norm_squared())
-                + to_f64(ball.inertia_kgm2()) * to_f64(w.norm_squared())
+        assert!(
+            r.velocity_mps
+                .iter()
+                .chain(r.spin_radps.iter())
+                .all(|x| x.is_finite()),
+            "a bounce from finite motion gave a non-finite one: {r:?}"
+        );
+        // √(2 × kinetic energy) = √(m v² + I ω²), scaled so that motion near the precision's
+        // largest value does not overflow the check itself (found by the fixed-seed run:
+        // ω² of a 1e155 rad/s spin is ∞ in f64, I ω² is not)
+        let norm = |v: &Vector3<T>| {
+            let c = [to_f64(v.x), to_f64(v.y), to_f64(v.z)];
+            let m = c.iter().fold(0.0_f64, |a, x| a.max(x.abs()));
+            if m > 0.0 {
+                m * c.iter().map(|x| (x / m) * (x / m)).sum::<f64>().sqrt()
+            } else {
+                0.0
+            }
+        };
+        let root_energy = |v: &Vector3<T>, w: &Vector3<T>| {
+            (to_f64(ball.mass_kg()).sqrt() * norm(v))
+                .hypot(to_f64(ball.inertia_kgm2()).sqrt() * norm(w))
         };
         if to_f64(vel.dot(&g.normal())) < 0.0 {
-            let (e0, e1) = (energy(&vel, &spin), energy(&r.velocity_mps, &r.spin_radps));
+            let (e0, e1) = (
+                root_energy(&vel, &spin),
+                root_energy(&r.velocity_mps, &r.spin_radps),
+            );
             assert!(
-                e1 <= e0 * (1.0 + 1e-4) + 1e-9,
-                "bounce adds energy: {e0} → {e1}"
+                e1 <= e0 * (1.0 + 5e-5) + 1e-9,
+                "bounce adds energy: √(2E) {e0} → {e1}"
             );
         }
         return Ok(());
