@@ -80,18 +80,10 @@ fn run<T: Real>(b: &mut Bytes<'_>) -> Result<()> {
                 .all(|x| x.is_finite()),
             "a bounce from finite motion gave a non-finite one: {r:?}"
         );
-        // √(2 × kinetic energy) = √(m v² + I ω²), scaled so that motion near the precision's
+        // √(2 × kinetic energy) = √(m v² + I ω²) by `hypot`, so that motion near the precision's
         // largest value does not overflow the check itself (found by the fixed-seed run:
         // ω² of a 1e155 rad/s spin is ∞ in f64, I ω² is not)
-        let norm = |v: &Vector3<T>| {
-            let c = [to_f64(v.x), to_f64(v.y), to_f64(v.z)];
-            let m = c.iter().fold(0.0_f64, |a, x| a.max(x.abs()));
-            if m > 0.0 {
-                m * c.iter().map(|x| (x / m) * (x / m)).sum::<f64>().sqrt()
-            } else {
-                0.0
-            }
-        };
+        let norm = |v: &Vector3<T>| to_f64(v.x).hypot(to_f64(v.y)).hypot(to_f64(v.z));
         let root_energy = |v: &Vector3<T>, w: &Vector3<T>| {
             (to_f64(ball.mass_kg()).sqrt() * norm(v))
                 .hypot(to_f64(ball.inertia_kgm2()).sqrt() * norm(w))

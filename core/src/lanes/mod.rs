@@ -58,8 +58,8 @@ use crate::wind::WindField;
 use kernel::{Pack, States};
 use nalgebra::Vector3;
 
-/// Shots advanced together by [`fly_each`]: 4 (a `wide::f64x4`: one AVX register of
-/// `f64`, two SSE2 ones on baseline x86-64; docs/performance.md).
+/// Shots advanced together by [`fly_each`]: 4 (`f64`: one AVX register with the [`Avx`]
+/// token, else a `wide::f64x4`, two SSE2 registers on baseline x86-64; docs/performance.md).
 pub const LANES: usize = 4;
 
 /// A precision the lanes kernel computes in, with its SIMD pack of [`LANES`] lanes
