@@ -64,18 +64,32 @@ runs_for() {
 }
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-for target in $(cargo fuzz list); do
+# Each libFuzzer run is one process on one core, so two targets run at once on CI's two cores
+# (the verdicts do not change: each run has its own corpus copy, seed and execution count).
+fuzz_one() {
+  local target=$1 runs
   runs=$(runs_for "$target")
-  say "fuzz $target: seed $FUZZ_SEED, $runs executions over the committed corpus"
   mkdir -p "$work/$target" "artifacts/$target"
   cp -r "corpus/$target/." "$work/$target/" 2>/dev/null || true
-  log="artifacts/$target.log"
-  set +e
+  local rc=0
   cargo fuzz run -O "$target" "$work/$target" -- \
     -seed="$FUZZ_SEED" -runs="$runs" -reload=0 -max_total_time=900 -timeout=10 -rss_limit_mb=2048 \
-    -print_final_stats=1 >"$log" 2>&1
-  rc=$?
-  set -e
+    -print_final_stats=1 >"artifacts/$target.log" 2>&1 || rc=$?
+  echo "$rc" >"$work/$target.rc"
+}
+FUZZ_JOBS=${FUZZ_JOBS:-2}
+targets=$(cargo fuzz list)
+say "fuzz ${targets//$'\n'/ }: seed $FUZZ_SEED over the committed corpus, $FUZZ_JOBS at a time"
+for target in $targets; do
+  while [ "$(jobs -rp | wc -l)" -ge "$FUZZ_JOBS" ]; do wait -n || true; done
+  fuzz_one "$target" &
+done
+wait
+failed=0
+for target in $targets; do
+  log="artifacts/$target.log"
+  rc=$(cat "$work/$target.rc" 2>/dev/null || echo missing)
+  say "fuzz $target: $(runs_for "$target") executions, exit $rc"
   grep -E '^(#[0-9]+ +DONE|Done|stat::number_of_executed_units|stat::peak_rss_mb|SUMMARY|==[0-9]+== ERROR)|panicked' "$log" || true
   # libFuzzer exits non-zero on a crash, timeout or OOM and leaves the input in artifacts/.
   if [ "$rc" != 0 ] || [ -n "$(find "artifacts/$target" -type f \( -name 'crash-*' -o -name 'timeout-*' -o -name 'oom-*' \) 2>/dev/null)" ]; then
@@ -85,7 +99,8 @@ for target in $(cargo fuzz list); do
       echo "input $f (base64): $(base64 -w0 "$f")" >&2
       echo "reproduce: cd fuzz && RUSTC_BOOTSTRAP=1 cargo fuzz run -O $target $f" >&2
     done
-    exit 1
+    failed=1
   fi
 done
+[ "$failed" = 0 ] || exit 1
 say "robustness done"
