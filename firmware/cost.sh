@@ -11,6 +11,11 @@
 #
 # PROFILE=N ./cost.sh   also lists, per operation, the N functions that executed the most
 #                       instructions (the plugin's per-symbol counters).
+# ADDRS=K ./cost.sh     also counts every instruction address of operation K (the table's
+#                       K-th row counted from 1, plus 1: region 0 and 1 are the calibration
+#                       loops) and lists its top ${LINES:-40} source lines, each as the
+#                       innermost core frame and the one inlining it (llvm-addr2line -i):
+#                       inside the few big inlined functions, where PROFILE cannot see.
 set -euo pipefail
 cd "$(dirname "$0")"
 . ./board.sh "${1:-an386}"
@@ -24,7 +29,8 @@ elf=$CARGO_TARGET_DIR/$TARGET/release/cost
 
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-CARRY_QEMU_ARGS="-icount shift=0 -plugin $plugin,out=$tmp/icount.txt,profile=${PROFILE:-0}" \
+addrs=${ADDRS:+,addrs=$ADDRS}
+CARRY_QEMU_ARGS="-icount shift=0 -plugin $plugin,out=$tmp/icount.txt,profile=${PROFILE:-0}$addrs" \
     ./qemu-run "$elf" > "$tmp/log.txt"
 
 echo "# instruction counts on $BOARD ($TARGET) — $(git -C .. rev-parse --short HEAD 2>/dev/null || echo uncommitted)"
@@ -55,4 +61,24 @@ if [ "${PROFILE:-0}" != 0 ]; then
         FNR == NR { if ($1 == "icount" && $3 ~ /^[0-9]+$/ && $4 == "fn") { k = $3; line = $0; sub(/^icount region [0-9]+ fn /, "", line); fns[k] = fns[k] "    " line "\n" } next }
         /^cost region=[0-9]+ n=/ { split($2, kv, "="); op = $0; sub(/.* op=/, "", op); if (op !~ /^empty/) printf "%s\n%s", op, fns[kv[2]] }
     ' "$tmp/icount.txt" "$tmp/log.txt"
+fi
+
+if [ -n "${ADDRS:-}" ]; then
+    echo
+    echo "## where operation $ADDRS's instructions go, by source line (innermost core frame <- its caller)"
+    awk '$1 == "icount" && $2 == "addr" { print "0x" $3 }' "$tmp/icount.txt" |
+        llvm-addr2line -e "$elf" -i -f -C -a > "$tmp/lines.txt"
+    awk -v src="$(cd .. && pwd)/core/src/" '
+        FNR == NR { if ($1 == "icount" && $2 == "addr") n["0x" $3] = $4; next }
+        function flush() { if (addr != "") { k = (inner == "" ? "?" : inner (outer == "" ? "" : " <- " outer)); sum[k] += n[addr] } }
+        /^0x[0-9a-f]+$/ { flush(); addr = $0; inner = ""; outer = ""; next }
+        /^\// || /^\?/ {
+            if (index($0, src) == 1) {
+                loc = substr($0, length(src) + 1); sub(/ .*/, "", loc)
+                if (inner == "") inner = loc; else if (outer == "") outer = loc
+            }
+            next
+        }
+        END { flush(); for (k in sum) printf "%8d  %s\n", sum[k], k }
+    ' "$tmp/icount.txt" "$tmp/lines.txt" | sort -rn | head -n "${LINES:-40}"
 fi

@@ -14,8 +14,8 @@ impl<T: RealField + Copy + Root> Real for T {}
 /// `ComplexField::sqrt` with `libm-force`). For `f32` on an ARM target with a hardware
 /// floating-point unit (`target_abi = "eabihf"`: the Cortex-M4F and M7), it is the FPU's
 /// `VSQRT.F32`, which IEEE 754 also requires to be correctly rounded: the same bits as libm's
-/// software `sqrtf` (the on-target suite checks every result against the host's), in about
-/// a tenth of the instructions (docs/firmware.md).
+/// software `sqrtf` (the on-target suite checks every result against the host's), in a
+/// leaf function of two instructions (docs/firmware.md).
 pub trait Root: Sized {
     /// `√self`, correctly rounded.
     #[must_use]
@@ -43,33 +43,41 @@ impl Root for f32 {
     }
 }
 
-/// The FPU's square root on hard-float ARM targets.
+/// The FPU's square root on hard-float ARM targets: a leaf function, `VSQRT.F32 s0, s0`
+/// and a return. The hard-float ABI passes the argument and the result in `s0`, so a call
+/// costs the call and the return (and the caller keeps its live values out of the
+/// argument registers), where an inline `asm!` has to take the value through a general
+/// register and save `s0` around the instruction on the stack (seven instructions a root):
+/// Rust's `sreg` operand class needs the unstable `vfp2` target feature (docs/firmware.md,
+/// *The FPU's square root*).
 #[cfg(all(target_arch = "arm", target_abi = "eabihf"))]
+#[allow(unsafe_code)]
 mod hardware {
-    /// `VSQRT.F32` on `x`. The value goes in and out through general registers (Rust's
-    /// `sreg` operand class needs the unstable `vfp2` target feature); `s0` is saved and
-    /// restored around the instruction on the stack.
-    #[allow(unsafe_code)]
+    // The instruction by its encoding (`.inst.w`, Thumb-2 T1 of VSQRT.F32 with Sd = Sm = s0):
+    // no `.fpu` directive, which would stay in force for any assembly after this block. Weak:
+    // two copies of the crate in one image share one definition.
+    core::arch::global_asm!(
+        ".pushsection .text.carry_core_vsqrtf,\"ax\",%progbits",
+        ".weak carry_core_vsqrtf",
+        ".type carry_core_vsqrtf,%function",
+        ".p2align 1",
+        ".thumb_func",
+        "carry_core_vsqrtf:",
+        ".inst.w 0xeeb10ac0",
+        "bx lr",
+        ".size carry_core_vsqrtf, . - carry_core_vsqrtf",
+        ".popsection",
+    );
+
+    unsafe extern "C" {
+        /// `√x` by `VSQRT.F32` (defined above; it touches `s0` and nothing else).
+        safe fn carry_core_vsqrtf(x: f32) -> f32;
+    }
+
+    /// `VSQRT.F32` on `x`.
     #[inline(always)]
     pub(super) fn sqrt(x: f32) -> f32 {
-        let bits: u32;
-        // SAFETY: the instructions touch only `s0` (pushed first, popped last), the two
-        // general registers named as operands and the stack below the stack pointer;
-        // VSQRT reads and writes no memory and sets no condition flags (only FPSCR's
-        // cumulative exception bits, as any floating-point operation does).
-        unsafe {
-            core::arch::asm!(
-                "vpush {{s0}}",
-                "vmov s0, {x}",
-                "vsqrt.f32 s0, s0",
-                "vmov {r}, s0",
-                "vpop {{s0}}",
-                x = in(reg) x.to_bits(),
-                r = lateout(reg) bits,
-                options(pure, readonly, preserves_flags)
-            );
-        }
-        f32::from_bits(bits)
+        carry_core_vsqrtf(x)
     }
 }
 

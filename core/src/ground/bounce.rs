@@ -82,6 +82,7 @@ pub fn restitution<T: Real>(normal_speed_mps: T, e0: T) -> T {
 /// A unit vector in the plane of `n` (unit): the tangential direction of motion `vt` (of
 /// length `len`) when there is one, else the direction a spin in the plane would kick the
 /// ball, else downrange.
+#[inline(always)]
 fn tangent_direction<T: Real>(
     vt: &Vector3<T>,
     len: T,

@@ -289,7 +289,7 @@ pub(crate) struct Hops<'s, T: Real> {
 }
 
 impl<T: Real> Hopper<T> for Hops<'_, T> {
-    #[cfg_attr(not(target_os = "none"), inline(always))]
+    #[cfg_attr(any(not(target_os = "none"), target_abi = "eabihf"), inline(always))]
     fn forces(
         &self,
         p: &Vector3<T>,

@@ -107,6 +107,7 @@ struct Sink<'a, T: Real> {
 }
 
 impl<T: Real> Sink<'_, T> {
+    #[inline(always)]
     fn write(&mut self, k: usize, position: &Vector3<T>, velocity: &Vector3<T>) {
         let Some(&origin) = self.schedule.origin.get(k) else {
             return;

@@ -35,9 +35,15 @@ static mut COUNT: u64 = 0;
 /// Per-symbol counters (profile mode), bumped inline like [`COUNT`].
 const MAX_SYMBOLS: usize = 16384;
 static mut SYM_COUNT: [u64; MAX_SYMBOLS] = [0; MAX_SYMBOLS];
+/// Per-instruction counters (`addrs=K`: region K's counts by address), bumped inline.
+const MAX_ADDRS: usize = 1 << 20;
+static mut ADDR_COUNT: [u64; MAX_ADDRS] = [0; MAX_ADDRS];
 
 struct State {
     profile: usize,
+    addrs_region: Option<u64>,
+    addr_slots: std::collections::BTreeMap<u64, usize>,
+    addr_snapshot: Vec<u64>,
     symbols: Vec<String>,
     symbol_index: std::collections::BTreeMap<usize, usize>,
     snapshot: Vec<u64>,
@@ -50,6 +56,9 @@ struct State {
 
 static STATE: Mutex<State> = Mutex::new(State {
     profile: 0,
+    addrs_region: None,
+    addr_slots: std::collections::BTreeMap::new(),
+    addr_snapshot: Vec::new(),
     symbols: Vec::new(),
     symbol_index: std::collections::BTreeMap::new(),
     snapshot: Vec::new(),
@@ -64,6 +73,13 @@ fn sym_counts(n: usize) -> Vec<u64> {
     // SAFETY: single vCPU; read while translated code is not running (inside a callback).
     (0..n)
         .map(|i| unsafe { core::ptr::read_volatile((&raw const SYM_COUNT).cast::<u64>().add(i)) })
+        .collect()
+}
+
+fn addr_counts() -> Vec<u64> {
+    // SAFETY: as `sym_counts`.
+    (0..MAX_ADDRS)
+        .map(|i| unsafe { core::ptr::read_volatile((&raw const ADDR_COUNT).cast::<u64>().add(i)) })
         .collect()
 }
 
@@ -94,12 +110,29 @@ unsafe extern "C" fn on_marker(_vcpu: c_uint, udata: *mut c_void) {
             if st.profile > 0 {
                 st.snapshot = sym_counts(st.symbols.len());
             }
+            if st.addrs_region == Some(st.region) {
+                st.addr_snapshot = addr_counts();
+            }
         }
         STOP => {
             if let Some(t0) = st.opened.take() {
                 let k = st.region;
                 st.region += 1;
                 emit(&mut st, &format!("icount region {k} {}", now - t0));
+                if st.addrs_region == Some(k) {
+                    let after = addr_counts();
+                    let lines: Vec<String> = st
+                        .addr_slots
+                        .iter()
+                        .filter_map(|(&a, &i)| {
+                            let d = after[i] - st.addr_snapshot.get(i).copied().unwrap_or(0);
+                            (d > 0).then(|| format!("icount addr {a:x} {d}"))
+                        })
+                        .collect();
+                    for l in lines {
+                        emit(&mut st, &l);
+                    }
+                }
                 if st.profile > 0 {
                     let after = sym_counts(st.symbols.len());
                     let mut delta: Vec<(u64, usize)> = after
@@ -195,6 +228,19 @@ unsafe extern "C" fn on_tb_trans(_id: qemu_plugin_id_t, tb: *mut qemu_plugin_tb)
                 );
             }
         }
+        if st.addrs_region.is_some() {
+            let a = unsafe { qemu_plugin_insn_vaddr(insn) };
+            let n = st.addr_slots.len();
+            let slot = *st.addr_slots.entry(a).or_insert(n.min(MAX_ADDRS - 1));
+            unsafe {
+                qemu_plugin_register_vcpu_insn_exec_inline(
+                    insn,
+                    qemu_plugin_op::QEMU_PLUGIN_INLINE_ADD_U64,
+                    (&raw mut ADDR_COUNT).cast::<u64>().add(slot).cast(),
+                    1,
+                );
+            }
+        }
         let kind = unsafe { marker_kind(&st, insn) };
         // A symbol lookup matches every instruction of the marker function: keep only the
         // one where the symbol starts (first in its TB, or a change of symbol).
@@ -250,6 +296,7 @@ pub unsafe extern "C" fn qemu_plugin_install(
             "start" => st.start_addr = parse_addr(v),
             "stop" => st.stop_addr = parse_addr(v),
             "profile" => st.profile = v.parse().unwrap_or(0),
+            "addrs" => st.addrs_region = v.parse().ok(),
             "out" => match std::fs::File::create(v) {
                 Ok(f) => st.out = Some(f),
                 Err(e) => {
