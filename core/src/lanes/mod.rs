@@ -272,9 +272,11 @@ struct Run<P: Pack, const N: usize> {
     /// The address of the scene whose field each lane holds (0: none): a shot through the
     /// lane's last scene sets only its spin axis.
     scene_of: [usize; N],
-    /// Bit masks of the lanes in flight and of those whose `k₁` is not evaluated yet.
+    /// Bit masks of the lanes in flight, of those whose `k₁` is not evaluated yet, and of
+    /// those whose grazing landing was refined (the scalar loop's `refined`).
     active: u32,
     fresh: u32,
+    refined: u32,
     /// The next shot to start.
     next: usize,
 }
@@ -284,7 +286,6 @@ struct Lane<'s, T: Real> {
     index: usize,
     scene: &'s PreparedScene<T>,
     axis: Vector3<T>,
-    refined: bool,
     tracker: Tracker<'s, 's, T>,
     /// The start state (written into the lanes' states by the caller of `refill`).
     start: State<T>,
@@ -336,6 +337,7 @@ impl<T: Real, P: Pack<Scalar = T>, const N: usize> Run<P, N> {
             scene_of: [0; N],
             active: 0,
             fresh: 0,
+            refined: 0,
             next: 0,
         }
     }
@@ -413,11 +415,11 @@ impl<T: Real, P: Pack<Scalar = T>, const N: usize> Run<P, N> {
                     }
                     self.active |= bit;
                     self.fresh |= bit;
+                    self.refined &= !bit;
                     return Some(Lane {
                         index,
                         scene: shot.scene,
                         axis,
-                        refined: false,
                         tracker: Tracker::new(shot.scene.landing_height, &y0, axis, None),
                         start: y0,
                     });
@@ -525,13 +527,19 @@ impl<T: Real, P: Pack<Scalar = T>, const N: usize> Run<P, N> {
         let rejected = active & !accepted;
         let mut take = accepted & !events;
         if events != 0 {
+            let found = self.locate(events, st, y, k1);
             for (l, slot) in lanes.iter_mut().enumerate() {
                 if events & (1 << l) == 0 {
                     continue;
                 }
                 let Some(lane) = slot else { continue };
-                let (y0, f0) = (kernel::lane(y, l), kernel::lane(k1, l));
-                match self.event(lane, l, st, &y0, &f0) {
+                let event = if found.slow & (1 << l) != 0 {
+                    let (y0, f0) = (kernel::lane(y, l), kernel::lane(k1, l));
+                    self.event(lane, l, st, &y0, &f0)
+                } else {
+                    self.found(lane, l, &found)
+                };
+                match event {
                     Event::Take => take |= 1 << l,
                     Event::Redo(th) => {
                         if let Some(r) = self.rejected.get_mut(l) {
@@ -599,7 +607,7 @@ impl<T: Real, P: Pack<Scalar = T>, const N: usize> Run<P, N> {
     /// Lane `l`'s events in its accepted step (the scalar loop's tracker calls): the
     /// grazing landing's redone step, the apex, the landing.
     fn event(
-        &self,
+        &mut self,
         lane: &mut Lane<'_, T>,
         l: usize,
         st: &kernel::Stages<P>,
@@ -619,13 +627,14 @@ impl<T: Real, P: Pack<Scalar = T>, const N: usize> Run<P, N> {
             f1: &k7,
             mid: Some([&k3, &k4, &k5, &k6]),
         };
-        let refine = if !lane.refined && lane.tracker.ends_below(&step) {
+        let bit = 1u32 << l;
+        let refine = if self.refined & bit == 0 && lane.tracker.ends_below(&step) {
             lane.tracker.grazing_landing(&step)
         } else {
             None
         };
         if let Some(th) = refine {
-            lane.refined = true;
+            self.refined |= bit;
             if th < T::one() && th > T::zero() {
                 return Event::Redo(th);
             }
@@ -640,6 +649,147 @@ impl<T: Real, P: Pack<Scalar = T>, const N: usize> Run<P, N> {
             Ok(None) => Event::Take,
         }
     }
+}
+
+/// What [`Run::locate`] found in the lanes with an event, packed.
+struct Found<P> {
+    /// Lanes left to the scalar tracker ([`Run::event`]): a landing step that may graze.
+    slow: u32,
+    /// Lanes with an apex in the step, its `θ` and height.
+    apex: u32,
+    apex_th: P,
+    apex_m: P,
+    /// Lanes with a landing in the step, its `θ` and interpolated state.
+    landing: u32,
+    landing_th: P,
+    landing_state: States<P>,
+}
+
+impl<T: Real, P: Pack<Scalar = T>, const N: usize> Run<P, N> {
+    /// The tracker's work (`Tracker::locate`, `grazing_landing`'s first test,
+    /// `Landing::in_step`) in the lanes `events`, packed: each lane's operations are the
+    /// scalar tracker's, so its apex, landing `θ` and landing state are the scalar ones bit
+    /// for bit. The apex's root (of `v_y`) and a landing's root (of `y − h_land`) run in one
+    /// packed root finding, lane by lane on its own interpolant; a landing after an apex in
+    /// the same step takes a second one. A landing step whose chord estimate does not rule
+    /// out a grazing landing goes to the scalar tracker (`slow`).
+    #[inline(always)]
+    fn locate(
+        &self,
+        events: u32,
+        st: &kernel::Stages<P>,
+        y0: &States<P>,
+        f0: &States<P>,
+    ) -> Found<P> {
+        let zero = P::splat(T::zero());
+        let one = P::splat(T::one());
+        let (h, hl, y1) = (self.h, self.landing_height, &st.y1);
+        let below = y1[Y].le(hl).bits();
+        // `grazing_landing`'s first test: the velocity interpolated linearly to where the
+        // height crosses linearly comes down at twice the grazing angle or more.
+        let candidates = events & below & !self.refined;
+        let mut slow = 0;
+        if candidates != 0 {
+            let (g0, g1) = (y0[Y] - hl, y1[Y] - hl);
+            let th = zero.lt(g0).blend(g0 / (g0 - g1), zero);
+            let vx = y0[VY - 1] + (y1[VY - 1] - y0[VY - 1]) * th;
+            let vy = y0[VY] + (y1[VY] - y0[VY]) * th;
+            let vz = y0[VY + 1] + (y1[VY + 1] - y0[VY + 1]) * th;
+            // `v.norm_squared()`: `0 + ((x² + y²) + z²)` (nalgebra's order).
+            let norm_sq = zero + ((vx * vx + vy * vy) + vz * vz);
+            let tan_sq = P::splat(lit(crate::integrator::GRAZING_TAN_SQ_TWICE));
+            let steep = vy.lt(zero) & (tan_sq * (norm_sq - vy * vy)).le(vy * vy);
+            slow = candidates & !steep.bits();
+        }
+        let fast = events & !slow;
+        let apex = fast & (zero.lt(y0[VY]) & y1[VY].le(zero)).bits();
+        // A landing in a step without an apex: from `θ = 0` if the step starts above.
+        let first = fast & !apex & hl.lt(y0[Y]).bits() & below;
+        let mut found = Found {
+            slow,
+            apex,
+            apex_th: zero,
+            apex_m: zero,
+            landing: first,
+            landing_th: zero,
+            landing_state: [zero; 7],
+        };
+        if apex | first == 0 {
+            return found;
+        }
+        let py = kernel::poly(h, y0[Y], y1[Y], f0[Y], st.k7[Y], mid(st, Y));
+        let a = P::mask(apex);
+        let (mut r, mut c, mut fa, mut fb) = (py, hl, y0[Y] - hl, y1[Y] - hl);
+        if apex != 0 {
+            let pv = kernel::poly(h, y0[VY], y1[VY], f0[VY], st.k7[VY], mid(st, VY));
+            for (ri, vi) in r.iter_mut().zip(pv.iter()) {
+                *ri = a.blend(*vi, *ri);
+            }
+            c = a.blend(zero, c);
+            fa = a.blend(y0[VY], fa);
+            fb = a.blend(y1[VY], fb);
+        }
+        let th = kernel::find_root(P::mask(apex | first), &r, c, zero, one, fa, fb);
+        found.landing_th = th;
+        if apex != 0 {
+            let ya = kernel::at(&py, th);
+            (found.apex_th, found.apex_m) = (th, ya);
+            // A landing after the apex in the same step: from the apex, if above.
+            let second = apex & hl.lt(ya).bits() & below;
+            if second != 0 {
+                let th2 = kernel::find_root(P::mask(second), &py, hl, th, one, ya - hl, y1[Y] - hl);
+                found.landing_th = P::mask(second).blend(th2, th);
+                found.landing |= second;
+            }
+        }
+        if found.landing != 0 {
+            let th = found.landing_th;
+            for (i, s) in found.landing_state.iter_mut().enumerate() {
+                *s = if i == Y {
+                    kernel::at(&py, th)
+                } else {
+                    kernel::at(
+                        &kernel::poly(h, y0[i], y1[i], f0[i], st.k7[i], mid(st, i)),
+                        th,
+                    )
+                };
+            }
+        }
+        found
+    }
+
+    /// Lane `l`'s events from what [`Run::locate`] found (`Tracker::on_step` after it):
+    /// the apex kept if higher, no landing if the apex is at or below the landing height,
+    /// the landing.
+    fn found(&self, lane: &mut Lane<'_, T>, l: usize, found: &Found<P>) -> Event<T> {
+        let bit = 1u32 << l;
+        let (h, t, hl) = (self.h.get(l), self.t.get(l), self.landing_height.get(l));
+        if found.apex & bit != 0 {
+            let ya = found.apex_m.get(l);
+            if ya > lane.tracker.apex_height {
+                lane.tracker.apex_height = ya;
+                lane.tracker.apex_time = t + found.apex_th.get(l) * h;
+            }
+            if ya <= hl {
+                return Event::Done(Err(Error::NoLanding));
+            }
+        }
+        if found.landing & bit == 0 {
+            return Event::Take;
+        }
+        let th = found.landing_th.get(l);
+        let landing = Landing {
+            time: t + th * h,
+            state: kernel::lane(&found.landing_state, l),
+        };
+        Event::Done(outcome(lane, &landing, self.stats(l)))
+    }
+}
+
+/// Component `i` of the stages `k₃..k₆` of every lane.
+#[inline(always)]
+fn mid<P: Pack>(st: &kernel::Stages<P>, i: usize) -> [P; 4] {
+    [st.k3[i], st.k4[i], st.k5[i], st.k6[i]]
 }
 
 /// The flight's outcome from its landing (`flight::run`'s end, without a ground).
