@@ -353,11 +353,16 @@ pub(crate) fn step<P: Pack>(
     rtol: P,
     atol: P,
 ) -> Stages<P> {
-    let k2 = eval(f, &combine(y, h, A2, [k1]));
-    let k3 = eval(f, &combine(y, h, A3, [k1, &k2]));
-    let k4 = eval(f, &combine(y, h, A4, [k1, &k2, &k3]));
-    let k5 = eval(f, &combine(y, h, A5, [k1, &k2, &k3, &k4]));
-    let k6 = eval(f, &combine(y, h, A6, [k1, &k2, &k3, &k4, &k5]));
+    // Each evaluation reads the field through an opaque copy of its reference: else the
+    // compiler merges the seven evaluations' loads of each coefficient into one and keeps
+    // it live across the step, in a spill slot it first copies it to (≈ 65 copies a step);
+    // read afresh, each load folds into its arithmetic instruction.
+    let fresh = core::hint::black_box::<&Field<P>>;
+    let k2 = eval(fresh(f), &combine(y, h, A2, [k1]));
+    let k3 = eval(fresh(f), &combine(y, h, A3, [k1, &k2]));
+    let k4 = eval(fresh(f), &combine(y, h, A4, [k1, &k2, &k3]));
+    let k5 = eval(fresh(f), &combine(y, h, A5, [k1, &k2, &k3, &k4]));
+    let k6 = eval(fresh(f), &combine(y, h, A6, [k1, &k2, &k3, &k4, &k5]));
     let y1 = combine(y, h, B, [k1, &k3, &k4, &k5, &k6]);
     let one = P::splat(lit(1.0));
     let zero = P::splat(lit(0.0));
@@ -365,7 +370,7 @@ pub(crate) fn step<P: Pack>(
     for ((w, a), b) in weight.iter_mut().zip(y.iter()).zip(y1.iter()) {
         *w = one / (atol + rtol * larger(a.abs(), b.abs()));
     }
-    let k7 = eval(f, &y1);
+    let k7 = eval(fresh(f), &y1);
     let e = combine(&[zero; 7], h, E, [k1, &k3, &k4, &k5, &k6, &k7]);
     let mut err = zero;
     for (ei, wi) in e.iter().zip(weight.iter()) {

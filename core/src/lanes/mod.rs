@@ -201,8 +201,7 @@ pub fn fly_each_in<P: Pack, const N: usize>(
     let (mut y, mut k1): (States<P>, States<P>) = ([zero; 7], [zero; 7]);
     let mut lanes: [Option<Lane<'_, P::Scalar>>; N] = core::array::from_fn(|_| None);
     for (l, slot) in lanes.iter_mut().enumerate() {
-        *slot = run.refill(l, shots, integrator, &mut sink);
-        place(&mut y, l, slot);
+        *slot = run.refill(l, shots, integrator, &mut sink, &mut y);
     }
     let (rtol, atol) = (P::splat(cfg.rtol), P::splat(cfg.atol));
     loop {
@@ -218,8 +217,7 @@ pub fn fly_each_in<P: Pack, const N: usize>(
                     && let Some(lane) = slot.take()
                 {
                     sink(lane.index, Err(run.failure(l)));
-                    *slot = run.refill(l, shots, integrator, &mut sink);
-                    place(&mut y, l, slot);
+                    *slot = run.refill(l, shots, integrator, &mut sink, &mut y);
                 }
             }
         }
@@ -244,14 +242,6 @@ pub fn fly_each_in<P: Pack, const N: usize>(
             integrator,
             &mut sink,
         );
-    }
-}
-
-/// Writes the start state of the lane just filled into `slot` (if any) into lane `l` of `y`.
-#[inline(always)]
-fn place<P: Pack>(y: &mut States<P>, l: usize, slot: &Option<Lane<'_, P::Scalar>>) {
-    if let Some(lane) = slot {
-        kernel::set_lane(y, l, &lane.start);
     }
 }
 
@@ -286,9 +276,9 @@ struct Lane<'s, T: Real> {
     index: usize,
     scene: &'s PreparedScene<T>,
     axis: Vector3<T>,
-    tracker: Tracker<'s, 's, T>,
-    /// The start state (written into the lanes' states by the caller of `refill`).
-    start: State<T>,
+    /// The apex so far (height, time): the scalar tracker's.
+    apex_m: T,
+    apex_time_s: T,
 }
 
 /// What a lane's events made of its accepted step.
@@ -385,13 +375,15 @@ impl<T: Real, P: Pack<Scalar = T>, const N: usize> Run<P, N> {
     }
 
     /// The next shot the kernel covers into lane `l` (the others fly on the scalar path,
-    /// and invalid ones get their error, on the way), or `None` when the shots are done.
+    /// and invalid ones get their error, on the way), its start state written into lane `l`
+    /// of `y`, or `None` when the shots are done.
     fn refill<'s>(
         &mut self,
         l: usize,
         shots: &[Shot<'s, T>],
         integrator: &Integrator<T>,
         sink: &mut impl FnMut(usize, Result<FlightOutcome<T>>),
+        y: &mut States<P>,
     ) -> Option<Lane<'s, T>> {
         let bit = 1u32 << l;
         while let Some(shot) = shots.get(self.next) {
@@ -416,12 +408,13 @@ impl<T: Real, P: Pack<Scalar = T>, const N: usize> Run<P, N> {
                     self.active |= bit;
                     self.fresh |= bit;
                     self.refined &= !bit;
+                    kernel::set_lane(y, l, &y0);
                     return Some(Lane {
                         index,
                         scene: shot.scene,
                         axis,
-                        tracker: Tracker::new(shot.scene.landing_height, &y0, axis, None),
-                        start: y0,
+                        apex_m: y0[Y],
+                        apex_time_s: T::zero(),
                     });
                 }
                 Err(e) => sink(index, Err(e)),
@@ -533,13 +526,18 @@ impl<T: Real, P: Pack<Scalar = T>, const N: usize> Run<P, N> {
                     continue;
                 }
                 let Some(lane) = slot else { continue };
-                let event = if found.slow & (1 << l) != 0 {
-                    let (y0, f0) = (kernel::lane(y, l), kernel::lane(k1, l));
-                    self.event(lane, l, st, &y0, &f0)
-                } else {
-                    self.found(lane, l, &found)
-                };
-                match event {
+                if found.slow & (1 << l) == 0 {
+                    // (The result goes to `sink` from `found`, not through an `Event`: one
+                    // copy of the outcome fewer.)
+                    if self.found(lane, l, &found, sink) {
+                        *slot = self.refill(l, shots, integrator, sink, y);
+                    } else {
+                        take |= 1 << l;
+                    }
+                    continue;
+                }
+                let (y0, f0) = (kernel::lane(y, l), kernel::lane(k1, l));
+                match self.event(lane, l, st, &y0, &f0) {
                     Event::Take => take |= 1 << l,
                     Event::Redo(th) => {
                         if let Some(r) = self.rejected.get_mut(l) {
@@ -549,8 +547,7 @@ impl<T: Real, P: Pack<Scalar = T>, const N: usize> Run<P, N> {
                     }
                     Event::Done(result) => {
                         sink(lane.index, result);
-                        *slot = self.refill(l, shots, integrator, sink);
-                        place(y, l, slot);
+                        *slot = self.refill(l, shots, integrator, sink, y);
                     }
                 }
             }
@@ -596,8 +593,7 @@ impl<T: Real, P: Pack<Scalar = T>, const N: usize> Run<P, N> {
                         && let Some(lane) = slot.take()
                     {
                         sink(lane.index, Err(Error::StepSizeUnderflow));
-                        *slot = self.refill(l, shots, integrator, sink);
-                        place(y, l, slot);
+                        *slot = self.refill(l, shots, integrator, sink, y);
                     }
                 }
             }
@@ -628,8 +624,11 @@ impl<T: Real, P: Pack<Scalar = T>, const N: usize> Run<P, N> {
             mid: Some([&k3, &k4, &k5, &k6]),
         };
         let bit = 1u32 << l;
-        let refine = if self.refined & bit == 0 && lane.tracker.ends_below(&step) {
-            lane.tracker.grazing_landing(&step)
+        // The scalar tracker, with the lane's apex so far (copied back).
+        let mut tracker = Tracker::new(lane.scene.landing_height, y0, lane.axis, None);
+        (tracker.apex_height, tracker.apex_time) = (lane.apex_m, lane.apex_time_s);
+        let refine = if self.refined & bit == 0 && tracker.ends_below(&step) {
+            tracker.grazing_landing(&step)
         } else {
             None
         };
@@ -639,7 +638,9 @@ impl<T: Real, P: Pack<Scalar = T>, const N: usize> Run<P, N> {
                 return Event::Redo(th);
             }
         }
-        match lane.tracker.on_step(t, &step) {
+        let found = tracker.on_step(t, &step);
+        (lane.apex_m, lane.apex_time_s) = (tracker.apex_height, tracker.apex_time);
+        match found {
             Err(e) => Event::Done(Err(e)),
             Ok(Some(th)) => Event::Done(outcome(
                 lane,
@@ -760,29 +761,37 @@ impl<T: Real, P: Pack<Scalar = T>, const N: usize> Run<P, N> {
 
     /// Lane `l`'s events from what [`Run::locate`] found (`Tracker::on_step` after it):
     /// the apex kept if higher, no landing if the apex is at or below the landing height,
-    /// the landing.
-    fn found(&self, lane: &mut Lane<'_, T>, l: usize, found: &Found<P>) -> Event<T> {
+    /// the landing. Whether the flight is over (its result handed to `sink`).
+    fn found(
+        &self,
+        lane: &mut Lane<'_, T>,
+        l: usize,
+        found: &Found<P>,
+        sink: &mut impl FnMut(usize, Result<FlightOutcome<T>>),
+    ) -> bool {
         let bit = 1u32 << l;
         let (h, t, hl) = (self.h.get(l), self.t.get(l), self.landing_height.get(l));
         if found.apex & bit != 0 {
             let ya = found.apex_m.get(l);
-            if ya > lane.tracker.apex_height {
-                lane.tracker.apex_height = ya;
-                lane.tracker.apex_time = t + found.apex_th.get(l) * h;
+            if ya > lane.apex_m {
+                lane.apex_m = ya;
+                lane.apex_time_s = t + found.apex_th.get(l) * h;
             }
             if ya <= hl {
-                return Event::Done(Err(Error::NoLanding));
+                sink(lane.index, Err(Error::NoLanding));
+                return true;
             }
         }
         if found.landing & bit == 0 {
-            return Event::Take;
+            return false;
         }
         let th = found.landing_th.get(l);
         let landing = Landing {
             time: t + th * h,
             state: kernel::lane(&found.landing_state, l),
         };
-        Event::Done(outcome(lane, &landing, self.stats(l)))
+        sink(lane.index, outcome(lane, &landing, self.stats(l)));
+        true
     }
 }
 
@@ -799,8 +808,7 @@ fn outcome<T: Real>(
     stats: Stats,
 ) -> Result<FlightOutcome<T>> {
     let scene = lane.scene;
-    let tracker = &lane.tracker;
-    let (apex_m, apex_time_s) = (tracker.apex_height, tracker.apex_time);
+    let (apex_m, apex_time_s) = (lane.apex_m, lane.apex_time_s);
     let y = landing.state;
     let speed = length(&Vector3::new(y[3], y[4], y[5]));
     if !(y.iter().all(|x| x.is_finite())
