@@ -506,21 +506,45 @@ impl<T: Real, P: Pack<Scalar = T>, const N: usize> Run<P, N> {
                 *a = a.saturating_add(1);
             }
         }
-        // `err ≤ 1` and a finite `y₁` (`|x| < ∞` is false for ±∞ and NaN).
+        // A finite `y₁` (`|x| < ∞` is false for ±∞ and NaN) and `err ≤ 1`.
         let inf = P::splat(lit(f64::INFINITY));
-        let mut ok = st.err.le(one);
-        for x in &st.y1 {
-            ok = ok & x.abs().lt(inf);
+        let mut finite_y1 = st.y1[0].abs().lt(inf);
+        for x in &st.y1[1..] {
+            finite_y1 = finite_y1 & x.abs().lt(inf);
         }
+        let ok = st.err.le(one) & finite_y1;
         // Only a step with an apex or a landing in it (or a grazing landing to redo)
         // needs the tracker: without them it changes nothing and finds nothing.
-        let event = ok & ((zero.lt(y[VY]) & st.y1[VY].le(zero)) | st.y1[Y].le(self.landing_height));
+        let event = (zero.lt(y[VY]) & st.y1[VY].le(zero)) | st.y1[Y].le(self.landing_height);
         let accepted = ok.bits() & active;
-        let events = event.bits() & active;
+        // The lanes that may have an event, before the error norm is known, and those that
+        // do (accepted).
+        let maybe = (event & finite_y1).bits() & active;
+        let events = maybe & accepted;
         let rejected = active & !accepted;
         let mut take = accepted & !events;
+        // The controller (`integrate::dormand_prince`): an accepted step grows `h` by
+        // `min(0.9·err^(−3/16), 5)` (at most 1 after a rejection), at least 0.2, to at most
+        // `max_step`; a rejected one shrinks it by `max(0.9·err^(−3/16), 0.2)`, at most 0.9
+        // (0.2 for a NaN error). Computed before the events (which change neither for a
+        // lane that takes its step or rejects it), so that its chain of four square roots
+        // and a division runs while the events' root finding does (both are latency).
+        let ir = safety * inv_root_3_16(st.err);
+        let mut grown = zero.lt(st.err).blend(grow.lt(ir).blend(grow, ir), grow);
+        grown = self
+            .rejected_last
+            .blend(one.lt(grown).blend(one, grown), grown);
+        let h_take = self.h * grown.lt(shrink).blend(shrink, grown);
+        let max_step = P::splat(self.cfg.max_step);
+        let h_take = max_step.lt(h_take).blend(max_step, h_take);
+        let finite = st.err.abs().lt(inf);
+        let shrunk = finite.blend(larger_p(ir, shrink), shrink);
+        let h_reject = self.h * smaller_p(shrunk, safety);
         if events != 0 {
-            let found = self.locate(events, st, y, k1);
+            // Located in every lane that may have an event, whether its step passes or not
+            // (known only from the error norm, which this then does not wait for); only
+            // the lanes whose step passes use it.
+            let found = self.locate(maybe, st, y, k1);
             for (l, slot) in lanes.iter_mut().enumerate() {
                 if events & (1 << l) == 0 {
                     continue;
@@ -552,22 +576,7 @@ impl<T: Real, P: Pack<Scalar = T>, const N: usize> Run<P, N> {
                 }
             }
         }
-        // The controller (`integrate::dormand_prince`): an accepted step grows `h` by
-        // `min(0.9·err^(−3/16), 5)` (at most 1 after a rejection), at least 0.2, to at most
-        // `max_step`; a rejected one shrinks it by `max(0.9·err^(−3/16), 0.2)`, at most 0.9
-        // (0.2 for a NaN error).
-        let ir = safety * inv_root_3_16(st.err);
         let (tk, rj) = (P::mask(take), P::mask(rejected));
-        let mut grown = zero.lt(st.err).blend(grow.lt(ir).blend(grow, ir), grow);
-        grown = self
-            .rejected_last
-            .blend(one.lt(grown).blend(one, grown), grown);
-        let h_take = self.h * grown.lt(shrink).blend(shrink, grown);
-        let max_step = P::splat(self.cfg.max_step);
-        let h_take = max_step.lt(h_take).blend(max_step, h_take);
-        let finite = st.err.abs().lt(inf);
-        let shrunk = finite.blend(larger_p(ir, shrink), shrink);
-        let h_reject = self.h * smaller_p(shrunk, safety);
         let h0 = self.h;
         self.h = tk.blend(h_take, rj.blend(h_reject, h0));
         self.t = tk.blend(self.t + h0, self.t);
