@@ -31,6 +31,9 @@ pub trait Pack:
     type Scalar: Real;
     /// Lanes in a pack.
     const LANES: usize;
+    /// Whether the apex and landing are located on packs (`Run::locate`), else by the
+    /// scalar tracker lane by lane.
+    const PACKED_EVENTS: bool = true;
     /// Every lane `x`.
     fn splat(x: Self::Scalar) -> Self;
     /// Lane `l % LANES`.
@@ -68,6 +71,7 @@ macro_rules! pack {
         impl Pack for $pack {
             type Scalar = $scalar;
             const LANES: usize = $n;
+            const PACKED_EVENTS: bool = false;
             #[inline(always)]
             fn splat(x: $scalar) -> Self {
                 <$pack>::splat(x)

@@ -695,6 +695,17 @@ impl<T: Real, P: Pack<Scalar = T>, const N: usize> Run<P, N> {
         let one = P::splat(T::one());
         let (h, hl, y1) = (self.h, self.landing_height, &st.y1);
         let below = y1[Y].le(hl).bits();
+        if !P::PACKED_EVENTS {
+            return Found {
+                slow: events,
+                apex: 0,
+                apex_th: zero,
+                apex_m: zero,
+                landing: 0,
+                landing_th: zero,
+                landing_state: [zero; 7],
+            };
+        }
         // `grazing_landing`'s first test: the velocity interpolated linearly to where the
         // height crosses linearly comes down at twice the grazing angle or more.
         let candidates = events & below & !self.refined;
