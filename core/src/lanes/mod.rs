@@ -4,9 +4,12 @@
 //! the next shot, so the lanes stay full until the batch runs out. The force evaluations,
 //! the Runge–Kutta stages, the error norm, the acceptance test and the step controller run
 //! across the lanes on SIMD packs (`wide`'s, or AVX registers through an [`Avx`] token:
-//! [`fly_each_on`]), the lanes' `t`, `h` and states kept in packs between steps; only a
-//! step with an apex or a landing in it, a refill and a failure are handled lane by lane,
-//! through the scalar path's own tracker (docs/performance.md, "Lanes kernel").
+//! [`fly_each_on`]), the lanes' `t`, `h` and states kept in packs between steps. On the AVX
+//! packs the apex and the landing are located packed too (one Newton root finding across
+//! the lanes, each on its own interpolant, the scalar tracker's operations); a lane's event
+//! decision and outcome, a refill and a failure are handled lane by lane, and a landing that
+//! may graze (and every event on `wide`'s packs) goes through the scalar path's own tracker
+//! (docs/performance.md, "Lanes kernel").
 //!
 //! **What it covers** ([`covers`]): the modern family ([`crate::aero::ModernAero`], the
 //! default `tour2023` and `drives2026`) with every effect on ([`crate::Effects::ALL`]), in
