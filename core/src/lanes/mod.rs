@@ -107,6 +107,21 @@ impl LaneReal for f64 {
 
 impl LaneReal for f32 {
     type Pack = wide::f32x4;
+
+    #[inline]
+    fn fly_each_on(
+        cpu: Option<Avx>,
+        shots: &[Shot<'_, Self>],
+        integrator: &Integrator<Self>,
+        sink: &mut dyn FnMut(usize, Result<FlightOutcome<Self>>),
+    ) {
+        #[cfg(target_arch = "x86_64")]
+        if let Some(cpu) = cpu {
+            return avx::fly_each_f32(cpu, shots, integrator, sink);
+        }
+        let _ = cpu;
+        fly_each_in::<Self::Pack, LANES>(shots, integrator, sink);
+    }
 }
 
 /// A proof that the CPU running the program has AVX (x86-64): with it, [`fly_each_on`]
