@@ -1,6 +1,7 @@
-//! The lanes kernel in `f64` on AVX (x86-64), for hosts that check the CPU at run time
-//! ([`super::Avx`]): the kernel's packs as one 256-bit register (`__m256d`) of four `f64`
-//! lanes, the whole kernel compiled with `#[target_feature(enable = "avx")]`.
+//! The lanes kernel on AVX (x86-64), for hosts that check the CPU at run time
+//! ([`super::Avx`]): the kernel's packs as one 256-bit register, four `f64` lanes
+//! (`__m256d`, [`F64x4`]) or eight `f32` lanes (`__m256`, [`F32x8`]), the whole kernel
+//! compiled with `#[target_feature(enable = "avx")]`.
 //!
 //! Why not `wide` here: `wide::f64x4` picks its representation when the crate is compiled
 //! (`cfg(target_feature = "avx")`), so on a baseline x86-64 build it is two SSE2 registers
@@ -9,13 +10,13 @@
 //! `-C target-cpu=x86-64-v3` build; docs/performance.md, "Lanes kernel"). This pack is the
 //! AVX representation whatever the build's baseline.
 //!
-//! The arithmetic is IEEE 754's (`vaddpd`, `vmulpd`, `vdivpd`, `vsqrtpd`: correctly rounded,
-//! as the scalar `addsd`…`sqrtsd`), no fused multiply–add (AVX has none; FMA is not
+//! The arithmetic is IEEE 754's (`vaddpd`, `vmulpd`, `vdivpd`, `vsqrtpd` and their `…ps`
+//! forms: correctly rounded, as the scalar `addsd`…`sqrtsd` and `addss`…`sqrtss`), no fused multiply–add (AVX has none; FMA is not
 //! enabled), so a lane is the scalar path's bit for bit, as with `wide`.
 //!
-//! Soundness: [`F64x4`] is private; a value of it exists only inside [`fly`], a
-//! `#[target_feature(enable = "avx")]` function that [`fly_each`] calls only with an
-//! [`Avx`] token, whose constructor requires the caller to have checked the CPU. Every
+//! Soundness: [`F64x4`] and [`F32x8`] are private; a value of them exists only inside
+//! [`fly`] and [`fly_f32`], `#[target_feature(enable = "avx")]` functions that [`fly_each`]
+//! and [`fly_each_f32`] call only with an [`Avx`] token, whose constructor requires the caller to have checked the CPU. Every
 //! intrinsic below therefore runs on a CPU with AVX.
 #![allow(unsafe_code)]
 

@@ -63,6 +63,7 @@ use nalgebra::Vector3;
 
 /// Shots advanced together by [`fly_each`]: 4 (`f64`: one AVX register with the [`Avx`]
 /// token, else a `wide::f64x4`, two SSE2 registers on baseline x86-64; docs/performance.md).
+/// [`fly_each_on`] with the token flies `f32` shots eight at a time (one AVX register).
 pub const LANES: usize = 4;
 
 /// A precision the lanes kernel computes in, with its SIMD pack of [`LANES`] lanes
@@ -125,7 +126,7 @@ impl LaneReal for f32 {
 }
 
 /// A proof that the CPU running the program has AVX (x86-64): with it, [`fly_each_on`]
-/// flies `f64` shots on 256-bit packs compiled for AVX whatever the build's baseline (the
+/// flies shots on 256-bit packs compiled for AVX whatever the build's baseline (the
 /// `x86-64` baseline has SSE2 only). The core is `no_std` and cannot ask the CPU; a host
 /// makes one after `is_x86_feature_detected!("avx")` (`carry_io::lanes`). On other
 /// architectures it exists but changes nothing.
@@ -145,9 +146,9 @@ impl Avx {
     }
 }
 
-/// [`fly_each`] on the fastest packs `cpu` allows: with an [`Avx`] token, `f64` shots fly
-/// on AVX packs (the same results bit for bit; docs/performance.md, "Lanes kernel");
-/// without one, or in `f32`, as [`fly_each`].
+/// [`fly_each`] on the fastest packs `cpu` allows: with an [`Avx`] token, shots fly on AVX
+/// packs (four `f64` or eight `f32` lanes; the same results bit for bit; docs/performance.md,
+/// "Lanes kernel"); without one, as [`fly_each`].
 pub fn fly_each_on<T: LaneReal>(
     cpu: Option<Avx>,
     shots: &[Shot<'_, T>],
