@@ -1,6 +1,8 @@
 //! Quick timing of the lanes kernel against the scalar path (medians of repeated runs over
-//! 1,024 launches, one thread): `cargo run --release -p carry-core --example lanes_timing`.
-//! The criterion bench (`--bench lanes`) is the reference; this is for profiling.
+//! 1,024 launches, one thread): `cargo run --release -p carry-core --example lanes_timing`,
+//! optionally with one path's name (`scalar`, `avx`, `lanes`, or in `f32`: `scalar32`,
+//! `avx32`, `lanes32`). The criterion bench (`--bench lanes`) is the reference; this is for
+//! profiling.
 use carry_core::lanes::{self, Shot};
 use carry_core::units::{deg, rpm};
 use carry_core::{Ball, Integrator, Launch, Scene};
@@ -86,6 +88,48 @@ fn main() {
         let mut c = 0.0;
         lanes::fly_each(&shots, &integrator, |_, r| {
             c += r.map_or(0.0, |o| o.carry_m)
+        });
+        c
+    });
+    // The same launches in `f32` (AVX: eight lanes a register).
+    let Ok(scene32) = Scene::<f32>::default().prepare(&Ball::standard()) else {
+        return;
+    };
+    let shots32: Vec<Shot<'_, f32>> = shots
+        .iter()
+        .filter_map(|s| {
+            let m = s.launch;
+            carry_core::BallMotion::<f32> {
+                velocity_mps: m.velocity_mps.map(|x| x as f32),
+                spin_radps: m.spin_radps.map(|x| x as f32),
+            }
+            .validated()
+            .ok()
+            .map(|launch| Shot {
+                scene: &scene32,
+                launch,
+            })
+        })
+        .collect();
+    let integrator32 = Integrator::<f32>::default();
+    time("scalar32", &|| {
+        shots32
+            .iter()
+            .filter_map(|s| s.scene.fly(&s.launch, &integrator32, None).ok())
+            .map(|o| f64::from(o.carry_m))
+            .sum()
+    });
+    time("avx32", &|| {
+        let mut c = 0.0;
+        lanes::fly_each_on(cpu, &shots32, &integrator32, |_, r| {
+            c += r.map_or(0.0, |o| f64::from(o.carry_m))
+        });
+        c
+    });
+    time("lanes32", &|| {
+        let mut c = 0.0;
+        lanes::fly_each(&shots32, &integrator32, |_, r| {
+            c += r.map_or(0.0, |o| f64::from(o.carry_m))
         });
         c
     });

@@ -1,11 +1,11 @@
 //! The core's lanes kernel ([`carry_core::lanes`], issue 37) on the fastest packs this CPU
 //! has: the host's runtime dispatch. The core is `no_std` and cannot ask the CPU; here
 //! `std` checks it once (`is_x86_feature_detected!`, cached by `std`) and hands the core an
-//! [`Avx`] token where the CPU has AVX, so `f64` batches fly on 256-bit packs compiled for
-//! AVX even in a baseline x86-64 build (which has SSE2 only). The results are the same bit
-//! for bit (docs/performance.md, "Lanes kernel"). `carry batch`, the Python package and
-//! the Dask example reach the kernel through [`crate::compute::run_rows`], which calls
-//! [`fly_each`].
+//! [`Avx`] token where the CPU has AVX, so batches (`f64` and `f32`) fly on 256-bit packs
+//! compiled for AVX even in a baseline x86-64 build (which has SSE2 only). The results are
+//! the same bit for bit (docs/performance.md, "Lanes kernel"). `carry batch`, the Python
+//! package and the Dask example reach the kernel through [`crate::compute::run_rows`],
+//! which calls [`fly_each`].
 
 use carry_core::lanes::{self, Avx, LaneReal, Shot};
 use carry_core::{FlightOutcome, Integrator, Result};

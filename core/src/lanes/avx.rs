@@ -1,6 +1,7 @@
-//! The lanes kernel in `f64` on AVX (x86-64), for hosts that check the CPU at run time
-//! ([`super::Avx`]): the kernel's packs as one 256-bit register (`__m256d`) of four `f64`
-//! lanes, the whole kernel compiled with `#[target_feature(enable = "avx")]`.
+//! The lanes kernel on AVX (x86-64), for hosts that check the CPU at run time
+//! ([`super::Avx`]): the kernel's packs as one 256-bit register, four `f64` lanes
+//! (`__m256d`, [`F64x4`]) or eight `f32` lanes (`__m256`, [`F32x8`]), the whole kernel
+//! compiled with `#[target_feature(enable = "avx")]`.
 //!
 //! Why not `wide` here: `wide::f64x4` picks its representation when the crate is compiled
 //! (`cfg(target_feature = "avx")`), so on a baseline x86-64 build it is two SSE2 registers
@@ -9,13 +10,13 @@
 //! `-C target-cpu=x86-64-v3` build; docs/performance.md, "Lanes kernel"). This pack is the
 //! AVX representation whatever the build's baseline.
 //!
-//! The arithmetic is IEEE 754's (`vaddpd`, `vmulpd`, `vdivpd`, `vsqrtpd`: correctly rounded,
-//! as the scalar `addsd`…`sqrtsd`), no fused multiply–add (AVX has none; FMA is not
+//! The arithmetic is IEEE 754's (`vaddpd`, `vmulpd`, `vdivpd`, `vsqrtpd` and their `…ps`
+//! forms: correctly rounded, as the scalar `addsd`…`sqrtsd` and `addss`…`sqrtss`), no fused multiply–add (AVX has none; FMA is not
 //! enabled), so a lane is the scalar path's bit for bit, as with `wide`.
 //!
-//! Soundness: [`F64x4`] is private; a value of it exists only inside [`fly`], a
-//! `#[target_feature(enable = "avx")]` function that [`fly_each`] calls only with an
-//! [`Avx`] token, whose constructor requires the caller to have checked the CPU. Every
+//! Soundness: [`F64x4`] and [`F32x8`] are private; a value of them exists only inside
+//! [`fly`] and [`fly_f32`], `#[target_feature(enable = "avx")]` functions that [`fly_each`]
+//! and [`fly_each_f32`] call only with an [`Avx`] token, whose constructor requires the caller to have checked the CPU. Every
 //! intrinsic below therefore runs on a CPU with AVX.
 #![allow(unsafe_code)]
 
@@ -23,9 +24,12 @@ use super::{Avx, Shot, fly_each_in, kernel::Pack};
 use crate::error::Result;
 use crate::flight::{FlightOutcome, Integrator};
 use core::arch::x86_64::{
-    __m256d, _CMP_LE_OQ, _CMP_LT_OQ, _CMP_NEQ_UQ, _mm256_add_pd, _mm256_and_pd, _mm256_andnot_pd,
-    _mm256_blendv_pd, _mm256_cmp_pd, _mm256_div_pd, _mm256_movemask_pd, _mm256_mul_pd,
-    _mm256_or_pd, _mm256_set1_pd, _mm256_sqrt_pd, _mm256_sub_pd, _mm256_xor_pd,
+    __m256, __m256d, _CMP_LE_OQ, _CMP_LT_OQ, _CMP_NEQ_UQ, _mm256_add_pd, _mm256_add_ps,
+    _mm256_and_pd, _mm256_and_ps, _mm256_andnot_pd, _mm256_andnot_ps, _mm256_blendv_pd,
+    _mm256_blendv_ps, _mm256_cmp_pd, _mm256_cmp_ps, _mm256_div_pd, _mm256_div_ps,
+    _mm256_movemask_pd, _mm256_movemask_ps, _mm256_mul_pd, _mm256_mul_ps, _mm256_or_pd,
+    _mm256_or_ps, _mm256_set1_pd, _mm256_set1_ps, _mm256_sqrt_pd, _mm256_sqrt_ps, _mm256_sub_pd,
+    _mm256_sub_ps, _mm256_xor_pd, _mm256_xor_ps,
 };
 use core::ops::{Add, BitAnd, BitOr, BitXor, Div, Mul, Not, Sub};
 
@@ -53,6 +57,7 @@ fn fly(
 
 /// Four `f64` lanes in one AVX register (only ever created inside [`fly`]).
 #[derive(Clone, Copy)]
+#[repr(transparent)]
 struct F64x4(__m256d);
 
 /// Every method below runs one AVX intrinsic on values of [`F64x4`], which exist only
@@ -93,18 +98,27 @@ impl Not for F64x4 {
 }
 
 impl F64x4 {
-    /// The lanes as an array.
+    /// The lanes in place (one scalar load or store each, also where the caller is not
+    /// compiled for AVX and would otherwise move the whole register through memory).
     #[inline(always)]
-    fn to_array(self) -> [f64; 4] {
-        // SAFETY: `__m256d` and `[f64; 4]` have the same size, and every bit pattern is
-        // valid for both.
-        unsafe { core::mem::transmute::<__m256d, [f64; 4]>(self.0) }
+    fn lanes(&self) -> &[f64; 4] {
+        // SAFETY: `F64x4` is a transparent `__m256d`, 32 bytes aligned to 32, which holds
+        // four `f64` (any bit pattern valid) at 8-byte alignment: the layout of `[f64; 4]`.
+        unsafe { &*core::ptr::from_ref(self).cast::<[f64; 4]>() }
+    }
+
+    /// See [`F64x4::lanes`].
+    #[inline(always)]
+    fn lanes_mut(&mut self) -> &mut [f64; 4] {
+        // SAFETY: as in `lanes`; the borrow is unique.
+        unsafe { &mut *core::ptr::from_mut(self).cast::<[f64; 4]>() }
     }
 
     /// The pack of an array.
     #[inline(always)]
     fn from_array(a: [f64; 4]) -> Self {
-        // SAFETY: as in `to_array`.
+        // SAFETY: `__m256d` and `[f64; 4]` have the same size, and every bit pattern is
+        // valid for both.
         Self(unsafe { core::mem::transmute::<[f64; 4], __m256d>(a) })
     }
 }
@@ -118,13 +132,11 @@ impl Pack for F64x4 {
     }
     #[inline(always)]
     fn get(&self, l: usize) -> f64 {
-        self.to_array()[l % 4]
+        self.lanes()[l % 4]
     }
     #[inline(always)]
     fn set(&mut self, l: usize, x: f64) {
-        let mut a = self.to_array();
-        a[l % 4] = x;
-        *self = Self::from_array(a);
+        self.lanes_mut()[l % 4] = x;
     }
     #[inline(always)]
     fn sqrt(self) -> Self {
@@ -157,9 +169,173 @@ impl Pack for F64x4 {
     }
     #[inline(always)]
     fn mask(bits: u32) -> Self {
-        let set = f64::from_bits(!0);
-        Self::from_array(core::array::from_fn(|l| {
-            if bits & (1 << l) != 0 { set } else { 0.0 }
-        }))
+        // One load from a table of the 16 masks (built by shifts and compares, it was ≈ 15
+        // integer instructions on AVX without AVX2).
+        Self::from_array(MASKS[(bits & 15) as usize])
     }
 }
+
+/// The lane masks of the 4-bit patterns: lane `l` of `MASKS[b]` all ones where bit `l` of
+/// `b` is set.
+static MASKS: [[f64; 4]; 16] = {
+    let mut m = [[0.0; 4]; 16];
+    let mut b = 0;
+    while b < 16 {
+        let mut l = 0;
+        while l < 4 {
+            if b & (1 << l) != 0 {
+                m[b][l] = f64::from_bits(!0);
+            }
+            l += 1;
+        }
+        b += 1;
+    }
+    m
+};
+
+/// Flies `f32` shots as [`super::fly_each`] does, on AVX packs of eight lanes.
+pub(super) fn fly_each_f32(
+    _cpu: Avx,
+    shots: &[Shot<'_, f32>],
+    integrator: &Integrator<f32>,
+    sink: &mut dyn FnMut(usize, Result<FlightOutcome<f32>>),
+) {
+    // SAFETY: as in `fly_each`: the token means the CPU has AVX, which `fly_f32` requires.
+    unsafe { fly_f32(shots, integrator, sink) }
+}
+
+/// The kernel on [`F32x8`] (eight lanes), compiled for AVX.
+#[target_feature(enable = "avx")]
+fn fly_f32(
+    shots: &[Shot<'_, f32>],
+    integrator: &Integrator<f32>,
+    sink: &mut dyn FnMut(usize, Result<FlightOutcome<f32>>),
+) {
+    fly_each_in::<F32x8, 8>(shots, integrator, sink);
+}
+
+/// Eight `f32` lanes in one AVX register (only ever created inside [`fly_f32`]; the same
+/// soundness argument as [`F64x4`]'s, and the same IEEE 754 single-precision operations as
+/// the scalar `addss`…`sqrtss`).
+#[derive(Clone, Copy)]
+#[repr(transparent)]
+struct F32x8(__m256);
+
+macro_rules! op32 {
+    ($tr:ident, $f:ident, $intr:ident) => {
+        impl $tr for F32x8 {
+            type Output = Self;
+            #[inline(always)]
+            fn $f(self, o: Self) -> Self {
+                Self(avx!($intr(self.0, o.0)))
+            }
+        }
+    };
+}
+op32!(Add, add, _mm256_add_ps);
+op32!(Sub, sub, _mm256_sub_ps);
+op32!(Mul, mul, _mm256_mul_ps);
+op32!(Div, div, _mm256_div_ps);
+op32!(BitAnd, bitand, _mm256_and_ps);
+op32!(BitOr, bitor, _mm256_or_ps);
+op32!(BitXor, bitxor, _mm256_xor_ps);
+
+impl Not for F32x8 {
+    type Output = Self;
+    #[inline(always)]
+    fn not(self) -> Self {
+        self ^ Self(avx!(_mm256_set1_ps(f32::from_bits(!0))))
+    }
+}
+
+impl F32x8 {
+    /// The lanes in place (see [`F64x4::lanes`]).
+    #[inline(always)]
+    fn lanes(&self) -> &[f32; 8] {
+        // SAFETY: `F32x8` is a transparent `__m256`, 32 bytes aligned to 32, which holds
+        // eight `f32` (any bit pattern valid) at 4-byte alignment: the layout of `[f32; 8]`.
+        unsafe { &*core::ptr::from_ref(self).cast::<[f32; 8]>() }
+    }
+
+    /// See [`F32x8::lanes`].
+    #[inline(always)]
+    fn lanes_mut(&mut self) -> &mut [f32; 8] {
+        // SAFETY: as in `lanes`; the borrow is unique.
+        unsafe { &mut *core::ptr::from_mut(self).cast::<[f32; 8]>() }
+    }
+}
+
+impl Pack for F32x8 {
+    type Scalar = f32;
+    const LANES: usize = 8;
+    #[inline(always)]
+    fn splat(x: f32) -> Self {
+        Self(avx!(_mm256_set1_ps(x)))
+    }
+    #[inline(always)]
+    fn get(&self, l: usize) -> f32 {
+        self.lanes()[l % 8]
+    }
+    #[inline(always)]
+    fn set(&mut self, l: usize, x: f32) {
+        self.lanes_mut()[l % 8] = x;
+    }
+    #[inline(always)]
+    fn sqrt(self) -> Self {
+        Self(avx!(_mm256_sqrt_ps(self.0)))
+    }
+    #[inline(always)]
+    fn abs(self) -> Self {
+        Self(avx!(_mm256_andnot_ps(_mm256_set1_ps(-0.0), self.0)))
+    }
+    #[inline(always)]
+    fn lt(self, o: Self) -> Self {
+        Self(avx!(_mm256_cmp_ps::<_CMP_LT_OQ>(self.0, o.0)))
+    }
+    #[inline(always)]
+    fn le(self, o: Self) -> Self {
+        Self(avx!(_mm256_cmp_ps::<_CMP_LE_OQ>(self.0, o.0)))
+    }
+    #[inline(always)]
+    fn ne(self, o: Self) -> Self {
+        // Unordered, as `F64x4::ne`.
+        Self(avx!(_mm256_cmp_ps::<_CMP_NEQ_UQ>(self.0, o.0)))
+    }
+    #[inline(always)]
+    fn blend(self, t: Self, f: Self) -> Self {
+        Self(avx!(_mm256_blendv_ps(f.0, t.0, self.0)))
+    }
+    #[inline(always)]
+    fn bits(self) -> u32 {
+        avx!(_mm256_movemask_ps(self.0)).cast_unsigned()
+    }
+    #[inline(always)]
+    fn mask(bits: u32) -> Self {
+        // Two loads from a table of the 16 four-lane masks.
+        let (lo, hi) = (
+            MASKS32[(bits & 15) as usize],
+            MASKS32[((bits >> 4) & 15) as usize],
+        );
+        let a = [lo[0], lo[1], lo[2], lo[3], hi[0], hi[1], hi[2], hi[3]];
+        // SAFETY: `__m256` and `[f32; 8]` have the same size, and every bit pattern is
+        // valid for both.
+        Self(unsafe { core::mem::transmute::<[f32; 8], __m256>(a) })
+    }
+}
+
+/// [`MASKS`] for `f32` lanes.
+static MASKS32: [[f32; 4]; 16] = {
+    let mut m = [[0.0; 4]; 16];
+    let mut b = 0;
+    while b < 16 {
+        let mut l = 0;
+        while l < 4 {
+            if b & (1 << l) != 0 {
+                m[b][l] = f32::from_bits(!0);
+            }
+            l += 1;
+        }
+        b += 1;
+    }
+    m
+};

@@ -31,6 +31,9 @@ pub trait Pack:
     type Scalar: Real;
     /// Lanes in a pack.
     const LANES: usize;
+    /// Whether the apex and landing are located on packs (`Run::locate`), else by the
+    /// scalar tracker lane by lane.
+    const PACKED_EVENTS: bool = true;
     /// Every lane `x`.
     fn splat(x: Self::Scalar) -> Self;
     /// Lane `l % LANES`.
@@ -68,6 +71,7 @@ macro_rules! pack {
         impl Pack for $pack {
             type Scalar = $scalar;
             const LANES: usize = $n;
+            const PACKED_EVENTS: bool = false;
             #[inline(always)]
             fn splat(x: $scalar) -> Self {
                 <$pack>::splat(x)
@@ -353,11 +357,16 @@ pub(crate) fn step<P: Pack>(
     rtol: P,
     atol: P,
 ) -> Stages<P> {
-    let k2 = eval(f, &combine(y, h, A2, [k1]));
-    let k3 = eval(f, &combine(y, h, A3, [k1, &k2]));
-    let k4 = eval(f, &combine(y, h, A4, [k1, &k2, &k3]));
-    let k5 = eval(f, &combine(y, h, A5, [k1, &k2, &k3, &k4]));
-    let k6 = eval(f, &combine(y, h, A6, [k1, &k2, &k3, &k4, &k5]));
+    // Each evaluation reads the field through an opaque copy of its reference: else the
+    // compiler merges the seven evaluations' loads of each coefficient into one and keeps
+    // it live across the step, in a spill slot it first copies it to (≈ 65 copies a step);
+    // read afresh, each load folds into its arithmetic instruction.
+    let fresh = core::hint::black_box::<&Field<P>>;
+    let k2 = eval(fresh(f), &combine(y, h, A2, [k1]));
+    let k3 = eval(fresh(f), &combine(y, h, A3, [k1, &k2]));
+    let k4 = eval(fresh(f), &combine(y, h, A4, [k1, &k2, &k3]));
+    let k5 = eval(fresh(f), &combine(y, h, A5, [k1, &k2, &k3, &k4]));
+    let k6 = eval(fresh(f), &combine(y, h, A6, [k1, &k2, &k3, &k4, &k5]));
     let y1 = combine(y, h, B, [k1, &k3, &k4, &k5, &k6]);
     let one = P::splat(lit(1.0));
     let zero = P::splat(lit(0.0));
@@ -365,7 +374,7 @@ pub(crate) fn step<P: Pack>(
     for ((w, a), b) in weight.iter_mut().zip(y.iter()).zip(y1.iter()) {
         *w = one / (atol + rtol * larger(a.abs(), b.abs()));
     }
-    let k7 = eval(f, &y1);
+    let k7 = eval(fresh(f), &y1);
     let e = combine(&[zero; 7], h, E, [k1, &k3, &k4, &k5, &k6, &k7]);
     let mut err = zero;
     for (ei, wi) in e.iter().zip(weight.iter()) {
@@ -382,4 +391,98 @@ pub(crate) fn step<P: Pack>(
         y1,
         err,
     }
+}
+
+/// The dense-output coefficients `r₁..r₅` of one component in every lane
+/// (`integrator::events::Step::poly_of`'s operations, in its order):
+/// `r₂ = y₁ − y₀`, `r₃ = h f₀ − r₂`, `r₄ = (r₂ − h f₁) − r₃`, `r₅ = h Σ dᵢ kᵢ`.
+#[inline(always)]
+pub(crate) fn poly<P: Pack>(h: P, y0: P, y1: P, f0: P, f1: P, mid: [P; 4]) -> [P; 5] {
+    let [d1, d3, d4, d5, d6, d7] = crate::integrator::events::DP_DENSE;
+    let [k3, k4, k5, k6] = mid;
+    let r2 = y1 - y0;
+    let r3 = h * f0 - r2;
+    let r4 = (r2 - h * f1) - r3;
+    let mut sum = P::splat(lit(d1)) * f0 + P::splat(lit(d3)) * k3;
+    sum = sum + P::splat(lit(d4)) * k4;
+    sum = sum + P::splat(lit(d5)) * k5;
+    sum = sum + P::splat(lit(d6)) * k6;
+    let r5 = h * (sum + P::splat(lit(d7)) * f1);
+    [y0, r2, r3, r4, r5]
+}
+
+/// The interpolant `r₁ + θ (r₂ + (1−θ) (r₃ + θ (r₄ + (1−θ) r₅)))` at `θ` in every lane
+/// (`Poly::at`).
+#[inline(always)]
+pub(crate) fn at<P: Pack>(r: &[P; 5], th: P) -> P {
+    let [r1, r2, r3, r4, r5] = *r;
+    let th1 = P::splat(lit(1.0)) - th;
+    r1 + th * (r2 + th1 * (r3 + th * (r4 + th1 * r5)))
+}
+
+/// The interpolant's value and slope in `θ` in every lane (`Poly::with_slope`).
+#[inline(always)]
+fn with_slope<P: Pack>(r: &[P; 5], th: P) -> (P, P) {
+    let [r1, r2, r3, r4, r5] = *r;
+    let th1 = P::splat(lit(1.0)) - th;
+    let c = r4 + th1 * r5;
+    let b = r3 + th * c;
+    let db = c - th * r5;
+    let (q, dq) = (r2 + th1 * b, th1 * db - b);
+    (r1 + th * q, q + th * dq)
+}
+
+/// `integrator::events::find_root` in the lanes of the mask `live`, each on its own
+/// interpolant `r` less `c` (`c = 0` for the apex's `v_y`: `x − 0 = x` bit for bit), bracket
+/// `[a, b]` and end values: the scalar iteration's operations and tests, a lane leaving
+/// the loop (its result kept) where the scalar one returns. Runs until every lane is done
+/// (at most 64 iterations, as the scalar one).
+#[inline(always)]
+pub(crate) fn find_root<T: Real, P: Pack<Scalar = T>>(
+    live: P,
+    r: &[P; 5],
+    c: P,
+    a: P,
+    b: P,
+    fa: P,
+    fb: P,
+) -> P {
+    let zero = P::splat(lit(0.0));
+    let half = P::splat(lit(0.5));
+    let tiny = P::splat(T::default_epsilon() * lit(4.0));
+    let (mut a, mut b, mut fa) = (a, b, fa);
+    // `fb == 0` returns `b` (`!(x ≠ 0)` is the ordered `x == 0`).
+    let mut out = b;
+    let mut live = live & fb.ne(zero);
+    let denom = fb - fa;
+    let mut x = denom
+        .ne(zero)
+        .blend((a * fb - b * fa) / denom, (a + b) * half);
+    for _ in 0..64 {
+        if live.bits() == 0 {
+            return out;
+        }
+        let lt = a.lt(b);
+        let (lo, hi) = (lt.blend(a, b), lt.blend(b, a));
+        x = (lo.lt(x) & x.lt(hi)).blend(x, (a + b) * half);
+        let (v, slope) = with_slope(r, x);
+        let fx = v - c;
+        let hit = live & !fx.ne(zero);
+        out = hit.blend(x, out);
+        live = live & !hit;
+        let same = !(zero.lt(fx) ^ zero.lt(fa));
+        let (move_a, move_b) = (live & same, live & !same);
+        a = move_a.blend(x, a);
+        fa = move_a.blend(fx, fa);
+        b = move_b.blend(x, b);
+        let step = fx / slope;
+        let next = x - step;
+        let stop = live & (step.abs().le(tiny) | (b - a).abs().le(tiny));
+        let lt = a.lt(b);
+        let (lo, hi) = (lt.blend(a, b), lt.blend(b, a));
+        out = stop.blend((lo.lt(next) & next.lt(hi)).blend(next, x), out);
+        live = live & !stop;
+        x = next;
+    }
+    live.blend(x, out)
 }

@@ -4,9 +4,12 @@
 //! the next shot, so the lanes stay full until the batch runs out. The force evaluations,
 //! the Runge–Kutta stages, the error norm, the acceptance test and the step controller run
 //! across the lanes on SIMD packs (`wide`'s, or AVX registers through an [`Avx`] token:
-//! [`fly_each_on`]), the lanes' `t`, `h` and states kept in packs between steps; only a
-//! step with an apex or a landing in it, a refill and a failure are handled lane by lane,
-//! through the scalar path's own tracker (docs/performance.md, "Lanes kernel").
+//! [`fly_each_on`]), the lanes' `t`, `h` and states kept in packs between steps. On the AVX
+//! packs the apex and the landing are located packed too (one Newton root finding across
+//! the lanes, each on its own interpolant, the scalar tracker's operations); a lane's event
+//! decision and outcome, a refill and a failure are handled lane by lane, and a landing that
+//! may graze (and every event on `wide`'s packs) goes through the scalar path's own tracker
+//! (docs/performance.md, "Lanes kernel").
 //!
 //! **What it covers** ([`covers`]): the modern family ([`crate::aero::ModernAero`], the
 //! default `tour2023` and `drives2026`) with every effect on ([`crate::Effects::ALL`]), in
@@ -60,6 +63,7 @@ use nalgebra::Vector3;
 
 /// Shots advanced together by [`fly_each`]: 4 (`f64`: one AVX register with the [`Avx`]
 /// token, else a `wide::f64x4`, two SSE2 registers on baseline x86-64; docs/performance.md).
+/// [`fly_each_on`] with the token flies `f32` shots eight at a time (one AVX register).
 pub const LANES: usize = 4;
 
 /// A precision the lanes kernel computes in, with its SIMD pack of [`LANES`] lanes
@@ -104,10 +108,25 @@ impl LaneReal for f64 {
 
 impl LaneReal for f32 {
     type Pack = wide::f32x4;
+
+    #[inline]
+    fn fly_each_on(
+        cpu: Option<Avx>,
+        shots: &[Shot<'_, Self>],
+        integrator: &Integrator<Self>,
+        sink: &mut dyn FnMut(usize, Result<FlightOutcome<Self>>),
+    ) {
+        #[cfg(target_arch = "x86_64")]
+        if let Some(cpu) = cpu {
+            return avx::fly_each_f32(cpu, shots, integrator, sink);
+        }
+        let _ = cpu;
+        fly_each_in::<Self::Pack, LANES>(shots, integrator, sink);
+    }
 }
 
 /// A proof that the CPU running the program has AVX (x86-64): with it, [`fly_each_on`]
-/// flies `f64` shots on 256-bit packs compiled for AVX whatever the build's baseline (the
+/// flies shots on 256-bit packs compiled for AVX whatever the build's baseline (the
 /// `x86-64` baseline has SSE2 only). The core is `no_std` and cannot ask the CPU; a host
 /// makes one after `is_x86_feature_detected!("avx")` (`carry_io::lanes`). On other
 /// architectures it exists but changes nothing.
@@ -127,9 +146,9 @@ impl Avx {
     }
 }
 
-/// [`fly_each`] on the fastest packs `cpu` allows: with an [`Avx`] token, `f64` shots fly
-/// on AVX packs (the same results bit for bit; docs/performance.md, "Lanes kernel");
-/// without one, or in `f32`, as [`fly_each`].
+/// [`fly_each`] on the fastest packs `cpu` allows: with an [`Avx`] token, shots fly on AVX
+/// packs (four `f64` or eight `f32` lanes; the same results bit for bit; docs/performance.md,
+/// "Lanes kernel"); without one, as [`fly_each`].
 pub fn fly_each_on<T: LaneReal>(
     cpu: Option<Avx>,
     shots: &[Shot<'_, T>],
@@ -201,8 +220,7 @@ pub fn fly_each_in<P: Pack, const N: usize>(
     let (mut y, mut k1): (States<P>, States<P>) = ([zero; 7], [zero; 7]);
     let mut lanes: [Option<Lane<'_, P::Scalar>>; N] = core::array::from_fn(|_| None);
     for (l, slot) in lanes.iter_mut().enumerate() {
-        *slot = run.refill(l, shots, integrator, &mut sink);
-        place(&mut y, l, slot);
+        *slot = run.refill(l, shots, integrator, &mut sink, &mut y);
     }
     let (rtol, atol) = (P::splat(cfg.rtol), P::splat(cfg.atol));
     loop {
@@ -218,8 +236,7 @@ pub fn fly_each_in<P: Pack, const N: usize>(
                     && let Some(lane) = slot.take()
                 {
                     sink(lane.index, Err(run.failure(l)));
-                    *slot = run.refill(l, shots, integrator, &mut sink);
-                    place(&mut y, l, slot);
+                    *slot = run.refill(l, shots, integrator, &mut sink, &mut y);
                 }
             }
         }
@@ -247,14 +264,6 @@ pub fn fly_each_in<P: Pack, const N: usize>(
     }
 }
 
-/// Writes the start state of the lane just filled into `slot` (if any) into lane `l` of `y`.
-#[inline(always)]
-fn place<P: Pack>(y: &mut States<P>, l: usize, slot: &Option<Lane<'_, P::Scalar>>) {
-    if let Some(lane) = slot {
-        kernel::set_lane(y, l, &lane.start);
-    }
-}
-
 /// The lanes' state, kept in packs between steps (the scalar loop's locals, lane by lane).
 struct Run<P: Pack, const N: usize> {
     cfg: Adaptive<P::Scalar>,
@@ -272,9 +281,11 @@ struct Run<P: Pack, const N: usize> {
     /// The address of the scene whose field each lane holds (0: none): a shot through the
     /// lane's last scene sets only its spin axis.
     scene_of: [usize; N],
-    /// Bit masks of the lanes in flight and of those whose `k₁` is not evaluated yet.
+    /// Bit masks of the lanes in flight, of those whose `k₁` is not evaluated yet, and of
+    /// those whose grazing landing was refined (the scalar loop's `refined`).
     active: u32,
     fresh: u32,
+    refined: u32,
     /// The next shot to start.
     next: usize,
 }
@@ -284,10 +295,9 @@ struct Lane<'s, T: Real> {
     index: usize,
     scene: &'s PreparedScene<T>,
     axis: Vector3<T>,
-    refined: bool,
-    tracker: Tracker<'s, 's, T>,
-    /// The start state (written into the lanes' states by the caller of `refill`).
-    start: State<T>,
+    /// The apex so far (height, time): the scalar tracker's.
+    apex_m: T,
+    apex_time_s: T,
 }
 
 /// What a lane's events made of its accepted step.
@@ -336,6 +346,7 @@ impl<T: Real, P: Pack<Scalar = T>, const N: usize> Run<P, N> {
             scene_of: [0; N],
             active: 0,
             fresh: 0,
+            refined: 0,
             next: 0,
         }
     }
@@ -383,13 +394,15 @@ impl<T: Real, P: Pack<Scalar = T>, const N: usize> Run<P, N> {
     }
 
     /// The next shot the kernel covers into lane `l` (the others fly on the scalar path,
-    /// and invalid ones get their error, on the way), or `None` when the shots are done.
+    /// and invalid ones get their error, on the way), its start state written into lane `l`
+    /// of `y`, or `None` when the shots are done.
     fn refill<'s>(
         &mut self,
         l: usize,
         shots: &[Shot<'s, T>],
         integrator: &Integrator<T>,
         sink: &mut impl FnMut(usize, Result<FlightOutcome<T>>),
+        y: &mut States<P>,
     ) -> Option<Lane<'s, T>> {
         let bit = 1u32 << l;
         while let Some(shot) = shots.get(self.next) {
@@ -413,13 +426,14 @@ impl<T: Real, P: Pack<Scalar = T>, const N: usize> Run<P, N> {
                     }
                     self.active |= bit;
                     self.fresh |= bit;
+                    self.refined &= !bit;
+                    kernel::set_lane(y, l, &y0);
                     return Some(Lane {
                         index,
                         scene: shot.scene,
                         axis,
-                        refined: false,
-                        tracker: Tracker::new(shot.scene.landing_height, &y0, axis, None),
-                        start: y0,
+                        apex_m: y0[Y],
+                        apex_time_s: T::zero(),
                     });
                 }
                 Err(e) => sink(index, Err(e)),
@@ -511,25 +525,60 @@ impl<T: Real, P: Pack<Scalar = T>, const N: usize> Run<P, N> {
                 *a = a.saturating_add(1);
             }
         }
-        // `err ≤ 1` and a finite `y₁` (`|x| < ∞` is false for ±∞ and NaN).
+        // A finite `y₁` (`|x| < ∞` is false for ±∞ and NaN) and `err ≤ 1`.
         let inf = P::splat(lit(f64::INFINITY));
-        let mut ok = st.err.le(one);
-        for x in &st.y1 {
-            ok = ok & x.abs().lt(inf);
+        let mut finite_y1 = st.y1[0].abs().lt(inf);
+        for x in &st.y1[1..] {
+            finite_y1 = finite_y1 & x.abs().lt(inf);
         }
+        let ok = st.err.le(one) & finite_y1;
         // Only a step with an apex or a landing in it (or a grazing landing to redo)
         // needs the tracker: without them it changes nothing and finds nothing.
-        let event = ok & ((zero.lt(y[VY]) & st.y1[VY].le(zero)) | st.y1[Y].le(self.landing_height));
+        let event = (zero.lt(y[VY]) & st.y1[VY].le(zero)) | st.y1[Y].le(self.landing_height);
         let accepted = ok.bits() & active;
-        let events = event.bits() & active;
+        // The lanes that may have an event, before the error norm is known, and those that
+        // do (accepted).
+        let maybe = (event & finite_y1).bits() & active;
+        let events = maybe & accepted;
         let rejected = active & !accepted;
         let mut take = accepted & !events;
+        // The controller (`integrate::dormand_prince`): an accepted step grows `h` by
+        // `min(0.9·err^(−3/16), 5)` (at most 1 after a rejection), at least 0.2, to at most
+        // `max_step`; a rejected one shrinks it by `max(0.9·err^(−3/16), 0.2)`, at most 0.9
+        // (0.2 for a NaN error). Computed before the events (which change neither for a
+        // lane that takes its step or rejects it), so that its chain of four square roots
+        // and a division runs while the events' root finding does (both are latency).
+        let ir = safety * inv_root_3_16(st.err);
+        let mut grown = zero.lt(st.err).blend(grow.lt(ir).blend(grow, ir), grow);
+        grown = self
+            .rejected_last
+            .blend(one.lt(grown).blend(one, grown), grown);
+        let h_take = self.h * grown.lt(shrink).blend(shrink, grown);
+        let max_step = P::splat(self.cfg.max_step);
+        let h_take = max_step.lt(h_take).blend(max_step, h_take);
+        let finite = st.err.abs().lt(inf);
+        let shrunk = finite.blend(larger_p(ir, shrink), shrink);
+        let h_reject = self.h * smaller_p(shrunk, safety);
         if events != 0 {
+            // Located in every lane that may have an event, whether its step passes or not
+            // (known only from the error norm, which this then does not wait for); only
+            // the lanes whose step passes use it.
+            let found = self.locate(maybe, st, y, k1);
             for (l, slot) in lanes.iter_mut().enumerate() {
                 if events & (1 << l) == 0 {
                     continue;
                 }
                 let Some(lane) = slot else { continue };
+                if found.slow & (1 << l) == 0 {
+                    // (The result goes to `sink` from `found`, not through an `Event`: one
+                    // copy of the outcome fewer.)
+                    if self.found(lane, l, &found, sink) {
+                        *slot = self.refill(l, shots, integrator, sink, y);
+                    } else {
+                        take |= 1 << l;
+                    }
+                    continue;
+                }
                 let (y0, f0) = (kernel::lane(y, l), kernel::lane(k1, l));
                 match self.event(lane, l, st, &y0, &f0) {
                     Event::Take => take |= 1 << l,
@@ -541,28 +590,12 @@ impl<T: Real, P: Pack<Scalar = T>, const N: usize> Run<P, N> {
                     }
                     Event::Done(result) => {
                         sink(lane.index, result);
-                        *slot = self.refill(l, shots, integrator, sink);
-                        place(y, l, slot);
+                        *slot = self.refill(l, shots, integrator, sink, y);
                     }
                 }
             }
         }
-        // The controller (`integrate::dormand_prince`): an accepted step grows `h` by
-        // `min(0.9·err^(−3/16), 5)` (at most 1 after a rejection), at least 0.2, to at most
-        // `max_step`; a rejected one shrinks it by `max(0.9·err^(−3/16), 0.2)`, at most 0.9
-        // (0.2 for a NaN error).
-        let ir = safety * inv_root_3_16(st.err);
         let (tk, rj) = (P::mask(take), P::mask(rejected));
-        let mut grown = zero.lt(st.err).blend(grow.lt(ir).blend(grow, ir), grow);
-        grown = self
-            .rejected_last
-            .blend(one.lt(grown).blend(one, grown), grown);
-        let h_take = self.h * grown.lt(shrink).blend(shrink, grown);
-        let max_step = P::splat(self.cfg.max_step);
-        let h_take = max_step.lt(h_take).blend(max_step, h_take);
-        let finite = st.err.abs().lt(inf);
-        let shrunk = finite.blend(larger_p(ir, shrink), shrink);
-        let h_reject = self.h * smaller_p(shrunk, safety);
         let h0 = self.h;
         self.h = tk.blend(h_take, rj.blend(h_reject, h0));
         self.t = tk.blend(self.t + h0, self.t);
@@ -588,8 +621,7 @@ impl<T: Real, P: Pack<Scalar = T>, const N: usize> Run<P, N> {
                         && let Some(lane) = slot.take()
                     {
                         sink(lane.index, Err(Error::StepSizeUnderflow));
-                        *slot = self.refill(l, shots, integrator, sink);
-                        place(y, l, slot);
+                        *slot = self.refill(l, shots, integrator, sink, y);
                     }
                 }
             }
@@ -599,7 +631,7 @@ impl<T: Real, P: Pack<Scalar = T>, const N: usize> Run<P, N> {
     /// Lane `l`'s events in its accepted step (the scalar loop's tracker calls): the
     /// grazing landing's redone step, the apex, the landing.
     fn event(
-        &self,
+        &mut self,
         lane: &mut Lane<'_, T>,
         l: usize,
         st: &kernel::Stages<P>,
@@ -619,18 +651,24 @@ impl<T: Real, P: Pack<Scalar = T>, const N: usize> Run<P, N> {
             f1: &k7,
             mid: Some([&k3, &k4, &k5, &k6]),
         };
-        let refine = if !lane.refined && lane.tracker.ends_below(&step) {
-            lane.tracker.grazing_landing(&step)
+        let bit = 1u32 << l;
+        // The scalar tracker, with the lane's apex so far (copied back).
+        let mut tracker = Tracker::new(lane.scene.landing_height, y0, lane.axis, None);
+        (tracker.apex_height, tracker.apex_time) = (lane.apex_m, lane.apex_time_s);
+        let refine = if self.refined & bit == 0 && tracker.ends_below(&step) {
+            tracker.grazing_landing(&step)
         } else {
             None
         };
         if let Some(th) = refine {
-            lane.refined = true;
+            self.refined |= bit;
             if th < T::one() && th > T::zero() {
                 return Event::Redo(th);
             }
         }
-        match lane.tracker.on_step(t, &step) {
+        let found = tracker.on_step(t, &step);
+        (lane.apex_m, lane.apex_time_s) = (tracker.apex_height, tracker.apex_time);
+        match found {
             Err(e) => Event::Done(Err(e)),
             Ok(Some(th)) => Event::Done(outcome(
                 lane,
@@ -642,6 +680,166 @@ impl<T: Real, P: Pack<Scalar = T>, const N: usize> Run<P, N> {
     }
 }
 
+/// What [`Run::locate`] found in the lanes with an event, packed.
+struct Found<P> {
+    /// Lanes left to the scalar tracker ([`Run::event`]): a landing step that may graze.
+    slow: u32,
+    /// Lanes with an apex in the step, its `θ` and height.
+    apex: u32,
+    apex_th: P,
+    apex_m: P,
+    /// Lanes with a landing in the step, its `θ` and interpolated state.
+    landing: u32,
+    landing_th: P,
+    landing_state: States<P>,
+}
+
+impl<T: Real, P: Pack<Scalar = T>, const N: usize> Run<P, N> {
+    /// The tracker's work (`Tracker::locate`, `grazing_landing`'s first test,
+    /// `Landing::in_step`) in the lanes `events`, packed: each lane's operations are the
+    /// scalar tracker's, so its apex, landing `θ` and landing state are the scalar ones bit
+    /// for bit. The apex's root (of `v_y`) and a landing's root (of `y − h_land`) run in one
+    /// packed root finding, lane by lane on its own interpolant; a landing after an apex in
+    /// the same step takes a second one. A landing step whose chord estimate does not rule
+    /// out a grazing landing goes to the scalar tracker (`slow`).
+    #[inline(always)]
+    fn locate(
+        &self,
+        events: u32,
+        st: &kernel::Stages<P>,
+        y0: &States<P>,
+        f0: &States<P>,
+    ) -> Found<P> {
+        let zero = P::splat(T::zero());
+        let one = P::splat(T::one());
+        let (h, hl, y1) = (self.h, self.landing_height, &st.y1);
+        let below = y1[Y].le(hl).bits();
+        if !P::PACKED_EVENTS {
+            return Found {
+                slow: events,
+                apex: 0,
+                apex_th: zero,
+                apex_m: zero,
+                landing: 0,
+                landing_th: zero,
+                landing_state: [zero; 7],
+            };
+        }
+        // `grazing_landing`'s first test: the velocity interpolated linearly to where the
+        // height crosses linearly comes down at twice the grazing angle or more.
+        let candidates = events & below & !self.refined;
+        let mut slow = 0;
+        if candidates != 0 {
+            let (g0, g1) = (y0[Y] - hl, y1[Y] - hl);
+            let th = zero.lt(g0).blend(g0 / (g0 - g1), zero);
+            let vx = y0[VY - 1] + (y1[VY - 1] - y0[VY - 1]) * th;
+            let vy = y0[VY] + (y1[VY] - y0[VY]) * th;
+            let vz = y0[VY + 1] + (y1[VY + 1] - y0[VY + 1]) * th;
+            // `v.norm_squared()`: `0 + ((x² + y²) + z²)` (nalgebra's order).
+            let norm_sq = zero + ((vx * vx + vy * vy) + vz * vz);
+            let tan_sq = P::splat(lit(crate::integrator::GRAZING_TAN_SQ_TWICE));
+            let steep = vy.lt(zero) & (tan_sq * (norm_sq - vy * vy)).le(vy * vy);
+            slow = candidates & !steep.bits();
+        }
+        let fast = events & !slow;
+        let apex = fast & (zero.lt(y0[VY]) & y1[VY].le(zero)).bits();
+        // A landing in a step without an apex: from `θ = 0` if the step starts above.
+        let first = fast & !apex & hl.lt(y0[Y]).bits() & below;
+        let mut found = Found {
+            slow,
+            apex,
+            apex_th: zero,
+            apex_m: zero,
+            landing: first,
+            landing_th: zero,
+            landing_state: [zero; 7],
+        };
+        if apex | first == 0 {
+            return found;
+        }
+        let py = kernel::poly(h, y0[Y], y1[Y], f0[Y], st.k7[Y], mid(st, Y));
+        let a = P::mask(apex);
+        let (mut r, mut c, mut fa, mut fb) = (py, hl, y0[Y] - hl, y1[Y] - hl);
+        if apex != 0 {
+            let pv = kernel::poly(h, y0[VY], y1[VY], f0[VY], st.k7[VY], mid(st, VY));
+            for (ri, vi) in r.iter_mut().zip(pv.iter()) {
+                *ri = a.blend(*vi, *ri);
+            }
+            c = a.blend(zero, c);
+            fa = a.blend(y0[VY], fa);
+            fb = a.blend(y1[VY], fb);
+        }
+        let th = kernel::find_root(P::mask(apex | first), &r, c, zero, one, fa, fb);
+        found.landing_th = th;
+        if apex != 0 {
+            let ya = kernel::at(&py, th);
+            (found.apex_th, found.apex_m) = (th, ya);
+            // A landing after the apex in the same step: from the apex, if above.
+            let second = apex & hl.lt(ya).bits() & below;
+            if second != 0 {
+                let th2 = kernel::find_root(P::mask(second), &py, hl, th, one, ya - hl, y1[Y] - hl);
+                found.landing_th = P::mask(second).blend(th2, th);
+                found.landing |= second;
+            }
+        }
+        if found.landing != 0 {
+            let th = found.landing_th;
+            for (i, s) in found.landing_state.iter_mut().enumerate() {
+                *s = if i == Y {
+                    kernel::at(&py, th)
+                } else {
+                    kernel::at(
+                        &kernel::poly(h, y0[i], y1[i], f0[i], st.k7[i], mid(st, i)),
+                        th,
+                    )
+                };
+            }
+        }
+        found
+    }
+
+    /// Lane `l`'s events from what [`Run::locate`] found (`Tracker::on_step` after it):
+    /// the apex kept if higher, no landing if the apex is at or below the landing height,
+    /// the landing. Whether the flight is over (its result handed to `sink`).
+    fn found(
+        &self,
+        lane: &mut Lane<'_, T>,
+        l: usize,
+        found: &Found<P>,
+        sink: &mut impl FnMut(usize, Result<FlightOutcome<T>>),
+    ) -> bool {
+        let bit = 1u32 << l;
+        let (h, t, hl) = (self.h.get(l), self.t.get(l), self.landing_height.get(l));
+        if found.apex & bit != 0 {
+            let ya = found.apex_m.get(l);
+            if ya > lane.apex_m {
+                lane.apex_m = ya;
+                lane.apex_time_s = t + found.apex_th.get(l) * h;
+            }
+            if ya <= hl {
+                sink(lane.index, Err(Error::NoLanding));
+                return true;
+            }
+        }
+        if found.landing & bit == 0 {
+            return false;
+        }
+        let th = found.landing_th.get(l);
+        let landing = Landing {
+            time: t + th * h,
+            state: kernel::lane(&found.landing_state, l),
+        };
+        sink(lane.index, outcome(lane, &landing, self.stats(l)));
+        true
+    }
+}
+
+/// Component `i` of the stages `k₃..k₆` of every lane.
+#[inline(always)]
+fn mid<P: Pack>(st: &kernel::Stages<P>, i: usize) -> [P; 4] {
+    [st.k3[i], st.k4[i], st.k5[i], st.k6[i]]
+}
+
 /// The flight's outcome from its landing (`flight::run`'s end, without a ground).
 fn outcome<T: Real>(
     lane: &Lane<'_, T>,
@@ -649,8 +847,7 @@ fn outcome<T: Real>(
     stats: Stats,
 ) -> Result<FlightOutcome<T>> {
     let scene = lane.scene;
-    let tracker = &lane.tracker;
-    let (apex_m, apex_time_s) = (tracker.apex_height, tracker.apex_time);
+    let (apex_m, apex_time_s) = (lane.apex_m, lane.apex_time_s);
     let y = landing.state;
     let speed = length(&Vector3::new(y[3], y[4], y[5]));
     if !(y.iter().all(|x| x.is_finite())
