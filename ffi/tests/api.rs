@@ -453,7 +453,7 @@ fn bad_input_gives_the_right_code() {
         |i: &mut CarryShotInputF32| i.scene.aero = 3,
         |i: &mut CarryShotInputF32| i.scene.air = 3,
         |i: &mut CarryShotInputF32| i.scene.wind = 3,
-        |i: &mut CarryShotInputF32| i.scene.ground = 7,
+        |i: &mut CarryShotInputF32| i.scene.ground = 8,
         |i: &mut CarryShotInputF32| i.settings.solver = 2,
         |i: &mut CarryShotInputF32| i.settings.integrator = u32::MAX,
     ] {
