@@ -207,6 +207,10 @@
 // drives).
 #define CARRY_GROUND_FAIRWAY_TRACKMAN 6
 
+// `CarryScene::ground`: the fairway of both TrackMan data sets (fitted to its roll on
+// single drives and its 2010 chart's totals at once).
+#define CARRY_GROUND_FAIRWAY_JOINT 7
+
 // `CarrySettings::solver`: the exact 3×3 collision-matrix form (default; fast).
 #define CARRY_SOLVER_REDUCED 0
 

@@ -50,6 +50,9 @@ pub const CARRY_GROUND_CUSTOM: u32 = 5;
 /// `CarryScene::ground`: the launch monitor's fairway (fitted to TrackMan's roll on single
 /// drives).
 pub const CARRY_GROUND_FAIRWAY_TRACKMAN: u32 = 6;
+/// `CarryScene::ground`: the fairway of both TrackMan data sets (fitted to its roll on
+/// single drives and its 2010 chart's totals at once).
+pub const CARRY_GROUND_FAIRWAY_JOINT: u32 = 7;
 
 /// Everything about a flight that is not the ball or its launch (SI units; the humidity
 /// is a fraction 0..1, not the CLI's %). Start from `carry_scene_default_*`.
@@ -216,6 +219,7 @@ impl<T: Real> CarryScene<T> {
             CARRY_GROUND_FAIRWAY => Surface::FairwayFirm,
             CARRY_GROUND_FAIRWAY_SOFT => Surface::FairwaySoft,
             CARRY_GROUND_FAIRWAY_TRACKMAN => Surface::FairwayTrackman,
+            CARRY_GROUND_FAIRWAY_JOINT => Surface::FairwayJoint,
             CARRY_GROUND_ROUGH => Surface::Rough,
             CARRY_GROUND_GREEN => Surface::Green {
                 stimp_m: self.stimp_m,

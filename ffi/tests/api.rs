@@ -266,6 +266,81 @@ fn shot_with_trajectory<T: Api>() {
     assert_eq!(&small[..], &samples[..3]);
 }
 
+/// Every named turf of `CarryScene::ground` is the core's surface of that name, and the
+/// default shot run out on it through the C API is the core's, bit for bit (the joint
+/// fairway of issue 35 included); an unknown code is refused.
+fn named_turfs<T: Api>() {
+    use carry_core::ground::{Ground, Surface};
+    use carry_ffi::scene::{
+        CARRY_GROUND_FAIRWAY, CARRY_GROUND_FAIRWAY_JOINT, CARRY_GROUND_FAIRWAY_SOFT,
+        CARRY_GROUND_FAIRWAY_TRACKMAN, CARRY_GROUND_ROUGH,
+    };
+    let mut totals = Vec::new();
+    for (code, surface) in [
+        (CARRY_GROUND_FAIRWAY, Surface::<T>::FairwayFirm),
+        (CARRY_GROUND_FAIRWAY_SOFT, Surface::FairwaySoft),
+        (CARRY_GROUND_ROUGH, Surface::Rough),
+        (CARRY_GROUND_FAIRWAY_TRACKMAN, Surface::FairwayTrackman),
+        (CARRY_GROUND_FAIRWAY_JOINT, Surface::FairwayJoint),
+    ] {
+        let mut input = zeroed::<CarryShotInput<T>>();
+        assert_eq!(T::shot_default(&mut input), CARRY_OK);
+        input.scene.ground = code;
+        let Ok(scene) = input.scene.scene() else {
+            panic!("scene {code}")
+        };
+        assert_eq!(scene.ground, Some(Ground::level(surface)), "code {code}");
+        let ball = Ball::<T>::standard();
+        let (Ok(club), Ok(prepared)) = (
+            input.club.spec().and_then(|s| Ok(s.validate()?)),
+            scene.prepare(&ball),
+        ) else {
+            panic!("default inputs")
+        };
+        let delivery = input.delivery.delivery();
+        let Ok(core) = shot::play(
+            &club,
+            &ball,
+            &delivery,
+            &prepared,
+            &Fidelity::default(),
+            None,
+        ) else {
+            panic!("core shot {code}")
+        };
+        let mut out = zeroed::<CarryShotResult<T>>();
+        let mut count = 0;
+        assert_eq!(T::shot(&input, &mut [], &mut count, &mut out), CARRY_OK);
+        assert_eq!(
+            out.flight,
+            CarryFlightResult::from_outcome(&core.flight),
+            "code {code}"
+        );
+        assert_eq!(out.flight.has_ground, 1);
+        totals.push(out.flight.total_m);
+    }
+    // The joint fairway is a turf of its own: its total is neither fairway's.
+    assert!(
+        totals[4] != totals[0] && totals[4] != totals[3],
+        "{totals:?}"
+    );
+    let mut input = zeroed::<CarryShotInput<T>>();
+    assert_eq!(T::shot_default(&mut input), CARRY_OK);
+    input.scene.ground = CARRY_GROUND_FAIRWAY_JOINT + 1;
+    let mut out = zeroed::<CarryShotResult<T>>();
+    let mut count = 0;
+    assert_eq!(
+        T::shot(&input, &mut [], &mut count, &mut out),
+        CARRY_ERR_UNKNOWN_OPTION
+    );
+}
+
+#[test]
+fn named_turfs_equal_the_core() {
+    named_turfs::<f32>();
+    named_turfs::<f64>();
+}
+
 #[test]
 fn shot_and_trajectory_equal_the_core() {
     shot_with_trajectory::<f32>();
@@ -378,7 +453,7 @@ fn bad_input_gives_the_right_code() {
         |i: &mut CarryShotInputF32| i.scene.aero = 3,
         |i: &mut CarryShotInputF32| i.scene.air = 3,
         |i: &mut CarryShotInputF32| i.scene.wind = 3,
-        |i: &mut CarryShotInputF32| i.scene.ground = 7,
+        |i: &mut CarryShotInputF32| i.scene.ground = 8,
         |i: &mut CarryShotInputF32| i.settings.solver = 2,
         |i: &mut CarryShotInputF32| i.settings.integrator = u32::MAX,
     ] {

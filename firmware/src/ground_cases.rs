@@ -21,7 +21,7 @@ pub struct GroundCase {
     /// Club preset name (`carry_core::PRESETS`).
     pub club: &'static str,
     pub club_speed_mps: f64,
-    /// 0 firm fairway, 1 soft fairway, 2 rough, 3 green.
+    /// 0 firm fairway, 1 soft fairway, 2 rough, 3 green, 4 the joint fairway (issue 35).
     pub surface: u8,
     /// Green speed (ft), greens only.
     pub stimp_ft: f64,
@@ -33,7 +33,7 @@ pub struct GroundCase {
 }
 
 /// The on-target ground shots.
-pub const GROUND_CASES: [GroundCase; 8] = [
+pub const GROUND_CASES: [GroundCase; 9] = [
     GroundCase {
         name: "driver_fairway",
         club: "driver",
@@ -116,6 +116,18 @@ pub const GROUND_CASES: [GroundCase; 8] = [
         slope_direction_deg: 180.0,
         launch: Some([38.0, 0.0, 900.0]),
     },
+    // The driver on the joint fairway (issue 35: TrackMan's drives and chart), slightly
+    // downhill: the normal–tangential crater and the turf's own fade and grass drag.
+    GroundCase {
+        name: "driver_fairway_joint",
+        club: "driver",
+        club_speed_mps: 45.0,
+        surface: 4,
+        stimp_ft: 0.0,
+        slope_deg: 1.5,
+        slope_direction_deg: 170.0,
+        launch: None,
+    },
 ];
 
 /// Ground outputs, in this order: carry, total, roll, rest x, y, z, time to rest,
@@ -143,6 +155,7 @@ impl GroundCase {
             0 => Surface::FairwayFirm,
             1 => Surface::FairwaySoft,
             2 => Surface::Rough,
+            4 => Surface::FairwayJoint,
             _ => Surface::Green {
                 stimp_m: lit(self.stimp_ft * carry_core::ground::surface::FOOT_M),
             },

@@ -243,7 +243,8 @@ pub struct SceneArgs {
     #[arg(long, value_name = "NAME|FILE.toml")]
     pub aero: Option<String>,
     /// Bounce and roll to rest on this ground: fairway, fairway-trackman (fitted to
-    /// TrackMan's roll on single drives), fairway-soft, rough, green, or a
+    /// TrackMan's roll on single drives), fairway-joint (fitted to TrackMan's single
+    /// drives and its 2010 chart at once), fairway-soft, rough, green, or a
     /// ground file FILE.toml (keys surface, stimp, restitution, friction,
     /// rolling_resistance, crater_scale, slope, slope_direction). Adds total, roll,
     /// bounces, rest position and time to rest.

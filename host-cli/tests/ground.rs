@@ -80,7 +80,7 @@ fn scene_and_ground_files() {
 fn batch_has_ground_columns_when_the_input_names_a_ground() {
     let input = temp_file(
         "shots.csv",
-        "ground,ball_speed\nfairway,70\ngreen,60\nsand,60\n",
+        "ground,ball_speed\nfairway,70\ngreen,60\nsand,60\nfairway-joint,70\nfairway-trackman,70\n",
     );
     let Run {
         code,
@@ -90,8 +90,38 @@ fn batch_has_ground_columns_when_the_input_names_a_ground() {
     assert_eq!(code, 0, "{err}");
     let lines: Vec<_> = out.lines().collect();
     assert!(lines[0].contains("total_m,roll_m,bounces"));
-    assert_eq!(lines.len(), 4);
+    assert_eq!(lines.len(), 6);
     assert!(lines[3].contains("unknown surface 'sand'"), "{}", lines[3]);
+    // The named turfs by column: the joint fairway's row is `--ground fairway-joint`'s,
+    // and differs from the two fairways it was fitted between.
+    let total = |line: &str| -> f64 {
+        let at = lines[0]
+            .split(',')
+            .position(|c| c == "total_m")
+            .expect("total_m");
+        line.split(',')
+            .nth(at)
+            .expect("cell")
+            .parse()
+            .expect("number")
+    };
+    let cli = json(&[
+        "flight",
+        "--json",
+        "--ball-speed",
+        "70",
+        "--ground",
+        "fairway-joint",
+    ]);
+    let joint = total(lines[4]);
+    assert!(
+        (joint - cli["flight"]["total_m"].as_f64().expect("total")).abs() < 1e-6,
+        "{joint} {cli}"
+    );
+    assert!(
+        joint != total(lines[1]) && joint != total(lines[5]),
+        "{out}"
+    );
 }
 
 #[test]

@@ -1,8 +1,9 @@
 //! The ground after the landing: `--ground NAME|FILE.toml` and its options → a core
 //! [`Ground`].
 //!
-//! Surfaces: `fairway` (firm), `fairway-soft`, `rough`, `green` (with `--stimp`, feet —
-//! the stimpmeter's own unit — default 10). Any of `--ground-restitution`,
+//! Surfaces: `fairway` (firm), `fairway-trackman` (TrackMan's single drives),
+//! `fairway-joint` (TrackMan's single drives and 2010 chart at once), `fairway-soft`,
+//! `rough`, `green` (with `--stimp`, feet — the stimpmeter's own unit — default 10). Any of `--ground-restitution`,
 //! `--ground-friction`, `--rolling-resistance`, `--crater-scale` overrides the surface's
 //! value (a custom turf). `--ground-slope DEG` tilts the ground plane through the landing
 //! point, rising towards `--ground-slope-direction DEG` (from downrange towards the right,
@@ -25,6 +26,9 @@ pub enum GroundPreset {
     Fairway,
     /// The launch monitor's fairway (fitted to TrackMan's single drives).
     FairwayTrackman,
+    /// The fairway of both TrackMan data sets (fitted to its single drives and its 2010
+    /// chart at once).
+    FairwayJoint,
     /// Soft fairway.
     FairwaySoft,
     /// Rough.
@@ -35,7 +39,7 @@ pub enum GroundPreset {
 
 /// The surface names, for messages.
 pub const GROUND_NAMES: &str =
-    "fairway, fairway-trackman, fairway-soft, rough, green, or a FILE.toml";
+    "fairway, fairway-trackman, fairway-joint, fairway-soft, rough, green, or a FILE.toml";
 
 impl GroundPreset {
     /// Looks a surface up by name.
@@ -44,6 +48,7 @@ impl GroundPreset {
         match name.trim().to_ascii_lowercase().replace('_', "-").as_str() {
             "fairway" | "fairway-firm" => Some(Self::Fairway),
             "fairway-trackman" | "trackman" => Some(Self::FairwayTrackman),
+            "fairway-joint" => Some(Self::FairwayJoint),
             "fairway-soft" => Some(Self::FairwaySoft),
             "rough" => Some(Self::Rough),
             "green" => Some(Self::Green),
@@ -196,6 +201,7 @@ pub fn build<T: Real>(spec: &GroundSpec) -> Result<Option<Ground<T>>, InputError
         }
         (GroundPreset::Fairway, None) => Surface::FairwayFirm,
         (GroundPreset::FairwayTrackman, None) => Surface::FairwayTrackman,
+        (GroundPreset::FairwayJoint, None) => Surface::FairwayJoint,
         (GroundPreset::FairwaySoft, None) => Surface::FairwaySoft,
         (GroundPreset::Rough, None) => Surface::Rough,
     };
@@ -242,7 +248,16 @@ mod tests {
             parse("Fairway-Soft").map(|g| g.preset),
             Ok(Some(GroundPreset::FairwaySoft))
         );
+        assert_eq!(
+            parse("fairway_joint").map(|g| g.preset),
+            Ok(Some(GroundPreset::FairwayJoint))
+        );
+        assert_eq!(
+            build::<f64>(&parse("fairway-joint").unwrap()).map(|g| g.map(|g| g.surface)),
+            Ok(Some(Surface::FairwayJoint))
+        );
         assert!(parse("sand").is_err_and(|e| e.contains("unknown surface 'sand'")));
+        assert!(GROUND_NAMES.contains("fairway-joint"));
         let spec = GroundSpec {
             slope_deg: Some(2.0),
             ..GroundSpec::default()

@@ -2,8 +2,10 @@
 //! and held out both ways (docs/ground.md, "Issue 35: one turf for the drives and the
 //! chart"; library `carry_lab::ground_joint`). Before: `fairway-trackman` (the drives'
 //! turf) and `fairway` (the chart's, ρ₀ fitted to its rolls), each held out as it was
-//! fitted. After: the joint fit. Flight `drives2026`; 21.1 °C, 50 % RH, 101 325 Pa, no
-//! wind, level ground.
+//! fitted. After: the joint fit, and the named preset `fairway-joint`
+//! (`Surface::FairwayJoint`, `carry_core::ground::surface::JOINT_FAIRWAY`: the fit on every
+//! row, rounded), with a side-by-side summary of the three named fairways at the end.
+//! Flight `drives2026`; 21.1 °C, 50 % RH, 101 325 Pa, no wind, level ground.
 //!
 //! `cargo run --release -p carry-lab --example ground_joint [--no-cv] [--weight=W]`
 use carry_core::Scene;
@@ -36,6 +38,32 @@ fn drive_figures(name: &str, rows: &[Landing], m: &[f64]) {
         100.0 * ttb,
         gd::fit_cost(rows, m)
     );
+}
+
+/// Drives' figures for the summary: worst band (yd), total (%), topped (%), and the total
+/// of each session block (%).
+fn drive_summary(rows: &[Landing], m: &[f64]) -> (f64, f64, f64, Vec<f64>) {
+    let b = gd::band_figures(rows, m, |_| true);
+    let totals: Vec<f64> = rows.iter().zip(m).map(|(l, r)| l.carry_m + r).collect();
+    let (t, _, _) = gd::total_error(rows, &totals, |_| true);
+    let (tt, _, _) = gd::total_error(rows, &totals, Landing::topped);
+    let mut ids: Vec<usize> = rows.iter().map(Landing::session).collect();
+    ids.sort_unstable();
+    ids.dedup();
+    let by_session = ids
+        .iter()
+        .map(|s| 100.0 * gd::total_error(rows, &totals, |l| l.session() == *s).0)
+        .collect();
+    (
+        b.iter().map(|x| x.mean_abs_yd).fold(0.0, f64::max),
+        100.0 * t,
+        100.0 * tt,
+        by_session,
+    )
+}
+
+fn chart_total(rows: &[RollRow]) -> f64 {
+    mean_abs(rows.iter().map(RollRow::total_error_yd))
 }
 
 fn chart_figures(name: &str, rows: &[RollRow]) {
@@ -86,12 +114,23 @@ fn main() -> Result<(), String> {
     let firm = Surface::<f64>::FairwayFirm
         .turf()
         .map_err(|e| e.to_string())?;
+    let preset = Surface::<f64>::FairwayJoint
+        .turf()
+        .map_err(|e| e.to_string())?;
     println!("\nin sample (indoor drives: TrackMan carry + model roll; chart: flown end to end)");
-    for (name, t) in [("fairway", firm), ("fairway-trackman", trackman)] {
+    let mut in_sample = Vec::new();
+    for (name, t) in [
+        ("fairway", firm),
+        ("fairway-trackman", trackman),
+        ("fairway-joint", preset),
+    ] {
         let m = gd::rolls(&indoor_rows, &gd::on_ground(&air, Surface::Custom(t))?);
         drive_figures(name, &indoor_rows, &m);
-        chart_figures(name, &gj::chart_rows(&chart, &air, t)?);
+        let c = gj::chart_rows(&chart, &air, t)?;
+        chart_figures(name, &c);
+        in_sample.push((drive_summary(&indoor_rows, &m), chart_total(&c)));
     }
+    println!("fairway-joint preset: {}", turf_line(&preset));
 
     // The joint fit on every row.
     let starts = [
@@ -135,6 +174,7 @@ fn main() -> Result<(), String> {
     let rows: Vec<Landing> = folds.iter().flat_map(|f| f.rows.clone()).collect();
     let m: Vec<f64> = folds.iter().flat_map(|f| f.rolls_m.clone()).collect();
     drive_figures("before: drives session CV", &rows, &m);
+    let trackman_cv = drive_summary(&rows, &m);
 
     // After, held out both ways.
     let v = gj::cross_validate(&landings, &air, &chart, &starts, weight, |s| {
@@ -160,5 +200,33 @@ fn main() -> Result<(), String> {
         kappas.iter().copied().fold(f64::INFINITY, f64::min),
         kappas.iter().copied().fold(0.0, f64::max)
     );
+    let joint_cv = drive_summary(&rows, &m);
+
+    // Side by side: each named fairway held out as it is fitted. `fairway`'s rho0 sees only
+    // the chart (its drive figures are held out as they stand), `fairway-trackman` only
+    // the drives (its chart figure is held out as it stands); `fairway-joint` both.
+    let held_out = [
+        (&in_sample[0].0, mean_abs(loo_total.iter().copied())),
+        (&trackman_cv, in_sample[1].1),
+        (&joint_cv, chart_total(&held)),
+    ];
+    println!(
+        "\nsummary | chart total in sample / held out (yd) | drives held out: total (%), by session | worst band (yd) | topped (%)"
+    );
+    for (i, name) in ["fairway", "fairway-trackman", "fairway-joint"]
+        .iter()
+        .enumerate()
+    {
+        let (d, chart_ho) = held_out[i];
+        let sessions: Vec<String> = d.3.iter().map(|x| format!("{x:.2}")).collect();
+        println!(
+            "{name:18} | {:.2} / {chart_ho:.2} | {:.2} ({}) | {:.1} | {:.1}",
+            in_sample[i].1,
+            d.1,
+            sessions.join(" / "),
+            d.0,
+            d.2
+        );
+    }
     Ok(())
 }

@@ -67,3 +67,32 @@ fn the_crater_scan_refits_rho_at_each_scale() {
         );
     }
 }
+
+/// The joint fairway (`fairway-joint`, issue 35) on the chart alone, flight `drives2026`
+/// (the default): its total within the issue's 5 yd, better than the two fairways it was
+/// fitted between (`fairway`, whose ρ₀ is fitted to the chart's rolls, 5.20 yd;
+/// `fairway-trackman`, the drives' turf, 6.90 yd), and every row's roll within the chart's
+/// own scatter.
+#[test]
+fn the_joint_fairway_meets_the_charts_total() {
+    let rows = parse_chart(CHART).unwrap_or_else(|e| panic!("{e}"));
+    let total = |s: Surface<f64>| {
+        let r = roll_rows(&rows, &chart_scene(s)).unwrap_or_else(|e| panic!("{e}"));
+        (mean_abs(r.iter().map(RollRow::total_error_yd)), r)
+    };
+    let (joint, r) = total(Surface::FairwayJoint);
+    let (firm, _) = total(Surface::FairwayFirm);
+    let (trackman, _) = total(Surface::FairwayTrackman);
+    assert!(
+        joint <= 5.0 && joint < firm && joint < trackman,
+        "chart total: joint {joint:.2} yd, fairway {firm:.2}, fairway-trackman {trackman:.2}"
+    );
+    for r in &r {
+        assert!(
+            (15.0..35.0).contains(&r.roll_yd.1),
+            "{}: {:.1} yd",
+            r.label,
+            r.roll_yd.1
+        );
+    }
+}

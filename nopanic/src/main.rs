@@ -262,6 +262,7 @@ fn ground<T: Real>() -> Option<Ground<T>> {
         0 => Surface::FairwayFirm,
         1 => Surface::FairwaySoft,
         4 => Surface::FairwayTrackman,
+        6 => Surface::FairwayJoint,
         2 => Surface::Rough,
         3 => Surface::Green { stimp_m: x(3.0) },
         _ => Surface::Custom(Turf {

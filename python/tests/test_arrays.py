@@ -117,6 +117,15 @@ def test_columns_match_the_keys():
     assert set(carry.impact()) == set(carry.columns("impact")) | {"errors"}
 
 
+def test_named_fairways_are_distinct_turfs():
+    # The three named fairways run the same flight out differently; the carry is the flight's.
+    runs = {g: carry.flight(ball_speed=68, launch_angle=11, spin=2700, ground=g)
+            for g in ("fairway", "fairway-trackman", "fairway-joint")}
+    carries = {float(r["carry_m"]) for r in runs.values()}
+    totals = {float(r["total_m"]) for r in runs.values()}
+    assert len(carries) == 1 and len(totals) == 3, runs
+
+
 def test_per_row_ground_options_add_ground_columns():
     r = carry.flight(stimp=[8, 10, 12], ground="green", ball_speed=30, launch_angle=30, spin=6000)
     assert r["total_m"].shape == (3,)

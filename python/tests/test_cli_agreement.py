@@ -52,6 +52,9 @@ CASES = [
     ("shot", dict(club_speed=47, impact_toe=0.012, impact_height=0.005, contact="rolling", wind_speed=4, wind_direction=180)),
     ("shot", dict(units="imperial", club="driver", club_speed=105, impact_toe=0.5, temperature=85, precision="f32")),
     ("shot", dict(club="pw", ground="green", stimp=11, tolerance=1e-8)),
+    # The issue-35 turfs by name: the drives' and the joint (drives and 2010 chart) fairway.
+    ("flight", dict(ball_speed=68, launch_angle=11, spin=2700, ground="fairway-trackman")),
+    ("flight", dict(ball_speed=68, launch_angle=11, spin=2700, ground="fairway-joint")),
     ("impact", dict(club_speed=40, attack_angle=-4, dynamic_loft=25, solver="full", contact="rolling")),
 ]
 

@@ -116,6 +116,8 @@ fn vertical_drop_without_spin_does_not_travel() {
         Surface::FairwaySoft,
         Surface::Rough,
         Surface::green(),
+        Surface::FairwayTrackman,
+        Surface::FairwayJoint,
     ] {
         let scene = Scene {
             launch_position_m: Vector3::new(3.0, 2.0, -1.0),
@@ -303,6 +305,8 @@ fn surfaces() -> impl Strategy<Value = Surface<f64>> {
         Just(Surface::FairwayFirm),
         Just(Surface::FairwaySoft),
         Just(Surface::Rough),
+        Just(Surface::FairwayTrackman),
+        Just(Surface::FairwayJoint),
         (2.0..4.5_f64).prop_map(|s| Surface::Green { stimp_m: s }),
         (0.0..=1.0_f64, 0.0..2.0_f64, 0.0..1.0_f64, 0.0..3.0_f64).prop_map(|(e, mu, rho, k)| {
             Surface::Custom(Turf {
@@ -464,10 +468,12 @@ fn topped_and_low_shots_agree_in_f32_and_f64() {
             Surface::FairwaySoft,
             Surface::Rough,
             Surface::green(),
+            Surface::FairwayTrackman,
+            Surface::FairwayJoint,
         ][i]
     }
     let mut worst = (0.0_f64, String::new());
-    for i in 0..4 {
+    for i in 0..6 {
         for speed in [60.0, 85.0, 110.0, 135.0, 160.0] {
             for angle in [-3.0, -1.0, 0.0, 0.5, 1.0, 2.0, 5.0, 8.0] {
                 for spin in [-500.0, 0.0, 300.0, 1500.0, 4000.0] {

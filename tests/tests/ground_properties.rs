@@ -42,7 +42,7 @@ fn cases() -> impl Strategy<Value = Case> {
             -300.0..1300.0,
             -400.0..400.0,
         ),
-        (0u8..7, 0.31..9.0, [0.0..1.0, 0.0..2.0, 0.0..1.0, 0.0..3.0]),
+        (0u8..8, 0.31..9.0, [0.0..1.0, 0.0..2.0, 0.0..1.0, 0.0..3.0]),
         (
             0.0..1.0,
             -3.2..3.2,
@@ -86,6 +86,7 @@ fn surface<T: Real>(c: &Case) -> Surface<T> {
             stimp_m: lit(c.stimp_m),
         },
         5 => Surface::FairwayTrackman,
+        7 => Surface::FairwayJoint,
         _ => Surface::Custom(Turf {
             restitution: lit(c.turf[0]),
             friction: lit(c.turf[1]),

@@ -478,6 +478,19 @@ mod tests {
         let t = Surface::<T>::FairwayTrackman.turf().unwrap();
         assert_eq!(t, t.validated().unwrap());
         assert_eq!(t.crater_fade_mps, lit(surface::TRACKMAN_FAIRWAY[4]));
+        // The joint fairway: valid, its own constants, fairway-trackman's turf but for a
+        // shallower crater and an earlier fade (docs/ground.md).
+        let j = Surface::<T>::FairwayJoint.turf().unwrap();
+        assert_eq!(j, j.validated().unwrap());
+        assert_eq!(j.crater_law, CraterLaw::NormalTangential);
+        assert_eq!(j.crater_scale, lit(surface::JOINT_FAIRWAY[3]));
+        assert_eq!(j.crater_fade_mps, lit(surface::JOINT_FAIRWAY[4]));
+        assert_eq!(j.grass_drag_s2pm2, lit(surface::JOINT_FAIRWAY[5]));
+        assert_eq!(
+            (j.restitution, j.friction, j.rolling_resistance),
+            (t.restitution, t.friction, t.rolling_resistance)
+        );
+        assert!(j.crater_scale < t.crater_scale && j.crater_fade_mps < t.crater_fade_mps);
     }
 
     #[test]
