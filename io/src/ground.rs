@@ -3,9 +3,9 @@
 //!
 //! Surfaces: `fairway` (firm), `fairway-trackman` (TrackMan's single drives),
 //! `fairway-joint` (TrackMan's single drives and 2010 chart at once), `fairway-soft`,
-//! `rough`, `green` (with `--stimp`, feet — the stimpmeter's own unit — default 10). Any of `--ground-restitution`,
-//! `--ground-friction`, `--rolling-resistance`, `--crater-scale` overrides the surface's
-//! value (a custom turf). `--ground-slope DEG` tilts the ground plane through the landing
+//! `rough`, `green` (with `--stimp`, feet — the stimpmeter's own unit — default 10). Any
+//! of `--ground-restitution`, `--ground-friction`, `--rolling-resistance`, `--crater-scale`
+//! overrides the surface's value (a custom turf). `--ground-slope DEG` tilts the ground plane through the landing
 //! point, rising towards `--ground-slope-direction DEG` (from downrange towards the right,
 //! like the wind: 0 = uphill to the target, 180 = downhill, 90 = rising to the right).
 //!

@@ -242,35 +242,19 @@ mod tests {
         let cost = |t: Turf<f64>| joint_cost(&landings, &air, &rows, t, &indoor, CHART_WEIGHT);
         let at = cost(preset).unwrap();
         let trackman = Surface::<f64>::FairwayTrackman.turf().unwrap();
+        let kappa = |d: f64| Turf {
+            crater_scale: preset.crater_scale + d,
+            ..preset
+        };
+        let fade = |d: f64| Turf {
+            crater_fade_mps: preset.crater_fade_mps + d,
+            ..preset
+        };
         for (what, t) in [
-            (
-                "kappa - 0.05",
-                Turf {
-                    crater_scale: preset.crater_scale - 0.05,
-                    ..preset
-                },
-            ),
-            (
-                "kappa + 0.05",
-                Turf {
-                    crater_scale: preset.crater_scale + 0.05,
-                    ..preset
-                },
-            ),
-            (
-                "v_f - 2",
-                Turf {
-                    crater_fade_mps: preset.crater_fade_mps - 2.0,
-                    ..preset
-                },
-            ),
-            (
-                "v_f + 1.5",
-                Turf {
-                    crater_fade_mps: preset.crater_fade_mps + 1.5,
-                    ..preset
-                },
-            ),
+            ("kappa - 0.05", kappa(-0.05)),
+            ("kappa + 0.05", kappa(0.05)),
+            ("v_f - 2", fade(-2.0)),
+            ("v_f + 1.5", fade(1.5)),
             ("fairway-trackman", trackman),
         ] {
             let other = cost(t).unwrap();

@@ -15,9 +15,9 @@
 //! enabled), so a lane is the scalar path's bit for bit, as with `wide`.
 //!
 //! Soundness: [`F64x4`] and [`F32x8`] are private; a value of them exists only inside
-//! [`fly`] and [`fly_f32`], `#[target_feature(enable = "avx")]` functions that [`fly_each`]
-//! and [`fly_each_f32`] call only with an [`Avx`] token, whose constructor requires the caller to have checked the CPU. Every
-//! intrinsic below therefore runs on a CPU with AVX.
+//! [`fly`], a `#[target_feature(enable = "avx")]` function that [`fly_each`] and
+//! [`fly_each_f32`] call only with an [`Avx`] token, whose constructor requires the caller
+//! to have checked the CPU. Every intrinsic below therefore runs on a CPU with AVX.
 #![allow(unsafe_code)]
 
 use super::{Avx, Shot, fly_each_in, kernel::Pack};
@@ -42,17 +42,17 @@ pub(super) fn fly_each(
 ) {
     // SAFETY: the token exists only where its creator checked that the CPU has AVX
     // (`Avx::new_unchecked`'s contract), which is what `fly` requires.
-    unsafe { fly(shots, integrator, sink) }
+    unsafe { fly::<F64x4, 4>(shots, integrator, sink) }
 }
 
-/// The kernel on [`F64x4`], compiled for AVX.
+/// The kernel on the packs `P` of `N` lanes ([`F64x4`] or [`F32x8`]), compiled for AVX.
 #[target_feature(enable = "avx")]
-fn fly(
-    shots: &[Shot<'_, f64>],
-    integrator: &Integrator<f64>,
-    sink: &mut dyn FnMut(usize, Result<FlightOutcome<f64>>),
+fn fly<P: Pack, const N: usize>(
+    shots: &[Shot<'_, P::Scalar>],
+    integrator: &Integrator<P::Scalar>,
+    sink: &mut dyn FnMut(usize, Result<FlightOutcome<P::Scalar>>),
 ) {
-    fly_each_in::<F64x4, 4>(shots, integrator, sink);
+    fly_each_in::<P, N>(shots, integrator, sink);
 }
 
 /// Four `f64` lanes in one AVX register (only ever created inside [`fly`]).
@@ -200,21 +200,11 @@ pub(super) fn fly_each_f32(
     integrator: &Integrator<f32>,
     sink: &mut dyn FnMut(usize, Result<FlightOutcome<f32>>),
 ) {
-    // SAFETY: as in `fly_each`: the token means the CPU has AVX, which `fly_f32` requires.
-    unsafe { fly_f32(shots, integrator, sink) }
+    // SAFETY: as in `fly_each`: the token means the CPU has AVX, which `fly` requires.
+    unsafe { fly::<F32x8, 8>(shots, integrator, sink) }
 }
 
-/// The kernel on [`F32x8`] (eight lanes), compiled for AVX.
-#[target_feature(enable = "avx")]
-fn fly_f32(
-    shots: &[Shot<'_, f32>],
-    integrator: &Integrator<f32>,
-    sink: &mut dyn FnMut(usize, Result<FlightOutcome<f32>>),
-) {
-    fly_each_in::<F32x8, 8>(shots, integrator, sink);
-}
-
-/// Eight `f32` lanes in one AVX register (only ever created inside [`fly_f32`]; the same
+/// Eight `f32` lanes in one AVX register (only ever created inside [`fly`]; the same
 /// soundness argument as [`F64x4`]'s, and the same IEEE 754 single-precision operations as
 /// the scalar `addss`…`sqrtss`).
 #[derive(Clone, Copy)]

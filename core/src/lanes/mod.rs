@@ -73,6 +73,16 @@ pub trait LaneReal: Real {
     #[doc(hidden)]
     type Pack: Pack<Scalar = Self>;
 
+    /// [`fly_each`] on this precision's AVX packs (four `f64` or eight `f32` lanes).
+    #[cfg(target_arch = "x86_64")]
+    #[doc(hidden)]
+    fn fly_each_avx(
+        cpu: Avx,
+        shots: &[Shot<'_, Self>],
+        integrator: &Integrator<Self>,
+        sink: &mut dyn FnMut(usize, Result<FlightOutcome<Self>>),
+    );
+
     /// [`fly_each`] on the fastest packs `cpu` allows (the baseline ones without it).
     #[doc(hidden)]
     #[inline]
@@ -82,6 +92,10 @@ pub trait LaneReal: Real {
         integrator: &Integrator<Self>,
         sink: &mut dyn FnMut(usize, Result<FlightOutcome<Self>>),
     ) {
+        #[cfg(target_arch = "x86_64")]
+        if let Some(cpu) = cpu {
+            return Self::fly_each_avx(cpu, shots, integrator, sink);
+        }
         let _ = cpu;
         fly_each_in::<Self::Pack, LANES>(shots, integrator, sink);
     }
@@ -90,38 +104,28 @@ pub trait LaneReal: Real {
 impl LaneReal for f64 {
     type Pack = wide::f64x4;
 
-    #[inline]
-    fn fly_each_on(
-        cpu: Option<Avx>,
+    #[cfg(target_arch = "x86_64")]
+    fn fly_each_avx(
+        cpu: Avx,
         shots: &[Shot<'_, Self>],
         integrator: &Integrator<Self>,
         sink: &mut dyn FnMut(usize, Result<FlightOutcome<Self>>),
     ) {
-        #[cfg(target_arch = "x86_64")]
-        if let Some(cpu) = cpu {
-            return avx::fly_each(cpu, shots, integrator, sink);
-        }
-        let _ = cpu;
-        fly_each_in::<Self::Pack, LANES>(shots, integrator, sink);
+        avx::fly_each(cpu, shots, integrator, sink);
     }
 }
 
 impl LaneReal for f32 {
     type Pack = wide::f32x4;
 
-    #[inline]
-    fn fly_each_on(
-        cpu: Option<Avx>,
+    #[cfg(target_arch = "x86_64")]
+    fn fly_each_avx(
+        cpu: Avx,
         shots: &[Shot<'_, Self>],
         integrator: &Integrator<Self>,
         sink: &mut dyn FnMut(usize, Result<FlightOutcome<Self>>),
     ) {
-        #[cfg(target_arch = "x86_64")]
-        if let Some(cpu) = cpu {
-            return avx::fly_each_f32(cpu, shots, integrator, sink);
-        }
-        let _ = cpu;
-        fly_each_in::<Self::Pack, LANES>(shots, integrator, sink);
+        avx::fly_each_f32(cpu, shots, integrator, sink);
     }
 }
 
