@@ -7,7 +7,9 @@
 //! row, rounded), with a side-by-side summary of the three named fairways at the end.
 //! Flight `drives2026`; 21.1 °C, 50 % RH, 101 325 Pa, no wind, level ground.
 //!
-//! `cargo run --release -p carry-lab --example ground_joint [--no-cv] [--weight=W]`
+//! `cargo run --release -p carry-lab --example ground_joint [--no-cv] [--weight=W] [--rows]`
+//! (`--rows`: after the cross-validation, each chart row's total error, in sample and held
+//! out, for the seed's `fairway` and for `fairway-joint`)
 use carry_core::Scene;
 use carry_core::aero::AeroModel;
 use carry_core::ground::{CraterLaw, Surface, Turf};
@@ -87,6 +89,7 @@ fn main() -> Result<(), String> {
             w.parse::<f64>().map_err(|e| e.to_string())
         })?;
     let cv = !std::env::args().any(|a| a == "--no-cv");
+    let per_row = std::env::args().any(|a| a == "--rows");
     let air = Scene {
         aero: AeroModel::drives_2026(),
         ..chart_scene(Surface::FairwayFirm)
@@ -119,6 +122,7 @@ fn main() -> Result<(), String> {
         .map_err(|e| e.to_string())?;
     println!("\nin sample (indoor drives: TrackMan carry + model roll; chart: flown end to end)");
     let mut in_sample = Vec::new();
+    let mut chart_in_sample = Vec::new();
     for (name, t) in [
         ("fairway", firm),
         ("fairway-trackman", trackman),
@@ -129,6 +133,7 @@ fn main() -> Result<(), String> {
         let c = gj::chart_rows(&chart, &air, t)?;
         chart_figures(name, &c);
         in_sample.push((drive_summary(&indoor_rows, &m), chart_total(&c)));
+        chart_in_sample.push(c);
     }
     println!("fairway-joint preset: {}", turf_line(&preset));
 
@@ -227,6 +232,27 @@ fn main() -> Result<(), String> {
             d.0,
             d.2
         );
+    }
+    if per_row {
+        // fit.rows, the in-sample rows and the held-out rows are all in the chart's order.
+        println!(
+            "\nper chart row: model total - chart total (yd) | fairway in sample / held out (rho0) | fairway-joint in sample / held out (joint fit)"
+        );
+        for (i, h) in held.iter().enumerate() {
+            if fit.rows[i].label != h.label || chart_in_sample[0][i].label != h.label {
+                return Err(format!("chart row {i}: the row orders differ"));
+            }
+            let err = |r: &RollRow| r.total_yd.1 - r.total_yd.0;
+            println!(
+                "{:24} chart {:6.1} | {:+6.1} / {:+6.1} | {:+6.1} / {:+6.1}",
+                h.label,
+                h.total_yd.0,
+                err(&chart_in_sample[0][i]),
+                loo_total[i],
+                err(&chart_in_sample[2][i]),
+                err(h)
+            );
+        }
     }
     Ok(())
 }
