@@ -1,22 +1,28 @@
 #!/usr/bin/env bash
 # The core's layering: derive the import graph among carry-core's top-level modules
-# (`core/src/X.rs` and `core/src/X/`) from their `crate::` and crossing `super::` paths
+# (`core/src/X.rs` and `core/src/X/`), or among the modules of any crate's module directory
+# (`lab/src/fit`: its `crate::fit::X` paths name the sibling X, other `crate::` paths lie
+# outside it), from their `crate::` and crossing `super::` paths
 # (grouped `use crate::{a, b::c}` included, and names the crate root re-exports resolved to
 # their module; comments and `#[cfg(test)]` modules left out),
 # print it, and fail on any import circle, printing each one.
 #
 #   bash .ci/core-layers.sh [core/src]      # prints the graph; exit 1 on a circle
+#   bash .ci/core-layers.sh lab/src/fit     # one module directory of a crate
 set -euo pipefail
 cd "$(dirname "$0")/.."
 src="${1:-core/src}"
 exec perl -e '
 use strict; use warnings;
 my $src = shift;
+# A module directory below a crate root: its path from the root (`fit`, `fit::sub`).
+my ($inner) = $src =~ m{/src/(.+?)/?$};
+$inner =~ s{/}{::}g if defined $inner;
 my %edges;                                    # from => { to => 1 }
 my @files = split /\n/, `find "$src" -name "*.rs" | sort`;
 for my $file (@files) {
     (my $rel = $file) =~ s{^\Q$src\E/}{};
-    next if $rel eq "lib.rs";
+    next if $rel eq "lib.rs" || $rel eq "mod.rs";
     my @path = split m{/}, $rel;
     $path[-1] =~ s/\.rs$//;
     pop @path if $path[-1] eq "mod";
@@ -28,6 +34,12 @@ for my $file (@files) {
     $text =~ s{/\*.*?\*/}{ }gs;
     $text =~ s{"(?:\\.|[^"\\])*"}{""}gs;
     $text =~ s{//[^\n]*}{}g;
+    if (defined $inner) {                    # crate::fit::X -> X; other crate:: paths leave
+        (my $re = $inner) =~ s/::/\\s*::\\s*/g;
+        $text =~ s/\bcrate\s*::\s*$re\s*::\s*/HERE::/g;
+        $text =~ s/\bcrate\s*::/OUTSIDE::/g;
+        $text =~ s/\bHERE::/crate::/g;
+    }
     # Inline modules: [start, end, name, is_test].
     my @mods;
     while ($text =~ /((#\[cfg\(test\)\]\s*)?(?:pub(?:\([^)]*\))?\s+)?mod\s+(\w+)\s*\{)/g) {
