@@ -577,19 +577,20 @@ impl Key {
     ///
     /// # Errors
     /// The message for the row, naming the key.
+    #[inline]
     pub fn check_number(self, x: f64) -> Result<f64, InputError> {
-        let ok = match self.kind() {
-            Kind::Radius => !x.is_nan() && x != f64::NEG_INFINITY,
-            _ => x.is_finite(),
-        };
-        if ok {
+        // Every kind takes a finite number: the key's kind is asked only of the rest.
+        if x.is_finite() || (self.kind() == Kind::Radius && x == f64::INFINITY) {
             Ok(x)
         } else {
-            Err(InputError::new(
-                self.name(),
-                format!("'{x}' is not a finite number"),
-            ))
+            Err(self.not_finite(x))
         }
+    }
+
+    /// The message for a number [`Key::check_number`] rejects.
+    #[cold]
+    fn not_finite(self, x: f64) -> InputError {
+        InputError::new(self.name(), format!("'{x}' is not a finite number"))
     }
 }
 

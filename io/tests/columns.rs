@@ -93,7 +93,10 @@ fn check(mode: Mode, base: &Params, units: Units, keys: &[Key], n: &Numerics) ->
         let got = &out[i * width..(i + 1) * width];
         match expected(mode, &cols, n, ground, i) {
             Ok(want) => {
-                let same = want.iter().zip(got).all(|(a, b)| a.to_bits() == b.to_bits());
+                let same = want
+                    .iter()
+                    .zip(got)
+                    .all(|(a, b)| a.to_bits() == b.to_bits());
                 assert!(same, "{mode:?} {keys:?} row {i}: {got:?} against {want:?}");
             }
             Err(message) => {
@@ -176,9 +179,20 @@ fn rows_that_vary_the_scene_or_the_delivery_equal_the_run() {
             ..Numerics::default()
         };
         let base = Params::default();
-        let windy = [Key::BallSpeed, Key::LaunchAngle, Key::WindSpeed, Key::WindDirection];
+        let windy = [
+            Key::BallSpeed,
+            Key::LaunchAngle,
+            Key::WindSpeed,
+            Key::WindDirection,
+        ];
         check(Mode::Flight, &base, Units::Imperial, &windy, &n);
-        check(Mode::Flight, &base, Units::Si, &[Key::Temperature, Key::Spin], &n);
+        check(
+            Mode::Flight,
+            &base,
+            Units::Si,
+            &[Key::Temperature, Key::Spin],
+            &n,
+        );
         let delivery = [Key::ClubSpeed, Key::AttackAngle, Key::FaceAngle];
         for mode in [Mode::Shot, Mode::Impact] {
             check(mode, &base, Units::Si, &delivery, &n);

@@ -38,10 +38,18 @@ fn block<T: LaneReal>(
         keys: &req.keys,
         values: columns,
     };
-    run_block::<T>(req.mode, &cols, &req.numerics, req.ground, first, out, width)
-        .into_iter()
-        .map(|(i, e)| (i, e.as_column()))
-        .collect()
+    run_block::<T>(
+        req.mode,
+        &cols,
+        &req.numerics,
+        req.ground,
+        first,
+        out,
+        width,
+    )
+    .into_iter()
+    .map(|(i, e)| (i, e.as_column()))
+    .collect()
 }
 
 /// Runs `req` over `rows` rows; `columns[j]` holds the values of `req.keys[j]`, each of
