@@ -163,8 +163,10 @@ fn bad_bases_fail_every_row_as_the_run_does() {
     let failed = check(Mode::Flight, &both, Units::Si, &LAUNCH, &n);
     assert_eq!(failed, 150);
     // An invalid ball and an invalid scene: the rows' own errors first, then the base's.
-    let mut ball = Params::default();
-    ball.ball_mass_kg = -1.0;
+    let ball = Params {
+        ball_mass_kg: -1.0,
+        ..Params::default()
+    };
     assert_eq!(check(Mode::Flight, &ball, Units::Si, &LAUNCH, &n), 150);
     let mut air = Params::default();
     air.scene.humidity_pct = Some(250.0);
