@@ -2,7 +2,7 @@
 //! [`Report`] in `f64`. The same generic code serves `--precision f32` and `f64`.
 
 use crate::error::InputError;
-use crate::params::{ClubParams, DEFAULT_BACKSPIN_RPM, Params};
+use crate::params::{ClubParams, DEFAULT_BACKSPIN_RPM, LaunchParams, Params};
 use crate::report::{
     ClubAfter, FlightReport, GroundReport, LaunchFigures, LaunchReport, Report, f3,
 };
@@ -323,7 +323,16 @@ fn launch_report<T: Real>(
 /// # Errors
 /// Conflicting spin options or an invalid launch.
 pub fn launch_motion<T: Real>(p: &Params) -> Result<(BallMotion<T>, LaunchReport), InputError> {
-    let l = &p.launch;
+    launch_motion_of::<T>(&p.launch)
+}
+
+/// As [`launch_motion`], from the launch alone (what it reads of the options).
+///
+/// # Errors
+/// Conflicting spin options or an invalid launch.
+pub fn launch_motion_of<T: Real>(
+    l: &LaunchParams,
+) -> Result<(BallMotion<T>, LaunchReport), InputError> {
     let axis_form = l.spin_rpm.is_some() || l.spin_axis_deg.is_some();
     let launch = if axis_form {
         if l.backspin_rpm.is_some() || l.sidespin_rpm.is_some() {
@@ -372,7 +381,7 @@ pub fn launch_motion<T: Real>(p: &Params) -> Result<(BallMotion<T>, LaunchReport
     Ok((motion, report))
 }
 
-fn flight_report<T: Real>(f: &FlightOutcome<T>) -> FlightReport {
+pub(crate) fn flight_report<T: Real>(f: &FlightOutcome<T>) -> FlightReport {
     FlightReport {
         carry_m: to_f64(f.carry_m),
         side_m: to_f64(f.side_m),
@@ -504,6 +513,21 @@ pub fn run_rows_in<T: LaneReal>(
     rows: &[Params],
     n: &Numerics,
 ) -> Vec<Result<Report, InputError>> {
+    run_rows_sharing::<T>(mode, rows, n, false)
+}
+
+/// As [`run_rows_in`]; with `one_scene` the caller vouches that every row has the same
+/// scene and ball (e.g. rows that differ only in keys that are not
+/// [`crate::params::Key::is_scene`]), so no row's scene is compared with the last: the
+/// first row that reaches its flight prepares the scene for all (the same results: a
+/// comparison would have found them equal).
+#[must_use]
+pub fn run_rows_sharing<T: LaneReal>(
+    mode: Mode,
+    rows: &[Params],
+    n: &Numerics,
+    one_scene: bool,
+) -> Vec<Result<Report, InputError>> {
     if mode == Mode::Impact {
         return rows.iter().map(|p| run_in::<T>(mode, p, n, None)).collect();
     }
@@ -512,11 +536,13 @@ pub fn run_rows_in<T: LaneReal>(
     let mut starts: Vec<Result<Start<T>, InputError>> = Vec::with_capacity(rows.len());
     let mut last: Option<&Params> = None;
     for p in rows {
-        let same = last.is_some_and(|q| {
-            q.scene == p.scene
-                && q.ball_mass_kg == p.ball_mass_kg
-                && q.ball_radius_m == p.ball_radius_m
-        }) && !scenes.is_empty();
+        let same = !scenes.is_empty()
+            && (one_scene
+                || last.is_some_and(|q| {
+                    q.scene == p.scene
+                        && q.ball_mass_kg == p.ball_mass_kg
+                        && q.ball_radius_m == p.ball_radius_m
+                }));
         let start = (|| {
             let ball = ball::<T>(p)?;
             let (motion, launch, club_after, impulse) = launch_of::<T>(mode, p, n, &ball)?;
@@ -638,7 +664,7 @@ fn launch_of<T: Real>(
 
 /// A clear message for a launch at or below the horizon from the landing height without
 /// a ground (the core's [`carry_core::Error::NoLanding`]); other errors as they are.
-fn into_the_ground<T: Real>(
+pub(crate) fn into_the_ground<T: Real>(
     e: carry_core::Error,
     motion: &BallMotion<T>,
     scene: &PreparedScene<T>,

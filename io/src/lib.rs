@@ -14,6 +14,8 @@
 //!   [`report::Report`];
 //! * [`report`]: the result records (the JSON contract) and the CSV columns;
 //! * [`batch`]: many shots from a CSV file, in parallel;
+//! * [`columns`]: many shots as columns of numbers over shared options (the Python
+//!   package's calls), straight into a row-major array;
 //! * [`error`]: [`error::InputError`], one line naming the option at fault;
 //! * [`choice`]: the options that take one of a few names, parsed without clap.
 //!
@@ -24,6 +26,7 @@
 pub mod aero_file;
 pub mod batch;
 pub mod choice;
+pub mod columns;
 pub mod compute;
 pub mod contact;
 pub mod error;

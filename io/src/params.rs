@@ -422,6 +422,9 @@ impl Key {
         match value {
             Value::Number(x) => {
                 let x = si(x);
+                if self.set_launch(l, x) {
+                    return;
+                }
                 match self {
                     Key::ClubSpeed => {
                         d.club_speed_mps = x;
@@ -449,13 +452,6 @@ impl Key {
                     Key::CgToFaceZ => c.cg_to_face_m.get_or_insert(preset_cg(c.preset))[2] = x,
                     Key::BallMass => p.ball_mass_kg = x,
                     Key::BallRadius => p.ball_radius_m = x,
-                    Key::BallSpeed => l.ball_speed_mps = x,
-                    Key::LaunchAngle => l.launch_angle_deg = x,
-                    Key::LaunchDirection => l.launch_direction_deg = x,
-                    Key::Backspin => l.backspin_rpm = Some(x),
-                    Key::Sidespin => l.sidespin_rpm = Some(x),
-                    Key::Spin => l.spin_rpm = Some(x),
-                    Key::SpinAxis => l.spin_axis_deg = Some(x),
                     Key::AirDensity => s.air_density_kgm3 = Some(x),
                     Key::Temperature => s.temperature_c = Some(x),
                     Key::Humidity => s.humidity_pct = Some(x),
@@ -506,6 +502,95 @@ impl Key {
             Value::Ground(g) => s.ground.merge(&g),
             Value::Convention(convention) => d.convention = convention,
         }
+    }
+}
+
+impl Key {
+    /// Whether this key is one of the launch's (a flight's input: ball speed, launch angle
+    /// and direction, the spins).
+    #[must_use]
+    pub fn is_launch(self) -> bool {
+        matches!(
+            self,
+            Self::BallSpeed
+                | Self::LaunchAngle
+                | Self::LaunchDirection
+                | Self::Backspin
+                | Self::Sidespin
+                | Self::Spin
+                | Self::SpinAxis
+        )
+    }
+
+    /// Whether this key changes the scene or the ball a shot flies with (the air, wind,
+    /// ground, aerodynamics, the ball's mass and radius): rows whose columns have none of
+    /// these share one prepared scene.
+    #[must_use]
+    pub fn is_scene(self) -> bool {
+        use Key::*;
+        matches!(
+            self,
+            BallMass
+                | BallRadius
+                | AirDensity
+                | Temperature
+                | Humidity
+                | Pressure
+                | Altitude
+                | Wind
+                | WindX
+                | WindY
+                | WindZ
+                | WindSpeed
+                | WindDirection
+                | WindReferenceHeight
+                | WindExponent
+                | LandingHeight
+                | TeeHeight
+                | TimeLimit
+                | NoDrag
+                | NoLift
+                | NoSpinDecay
+                | Aero
+        ) || self.is_ground()
+    }
+
+    /// Stores the number `x` (SI) into the launch `l` when this is a launch key
+    /// ([`Key::is_launch`]; what [`Key::set`] does for it); `false` for any other key.
+    pub fn set_launch(self, l: &mut LaunchParams, x: f64) -> bool {
+        match self {
+            Key::BallSpeed => l.ball_speed_mps = x,
+            Key::LaunchAngle => l.launch_angle_deg = x,
+            Key::LaunchDirection => l.launch_direction_deg = x,
+            Key::Backspin => l.backspin_rpm = Some(x),
+            Key::Sidespin => l.sidespin_rpm = Some(x),
+            Key::Spin => l.spin_rpm = Some(x),
+            Key::SpinAxis => l.spin_axis_deg = Some(x),
+            _ => return false,
+        }
+        true
+    }
+
+    /// Checks a number for this key as the text parser would ([`parse_finite`], or
+    /// [`parse_radius`] for a face radius, which may be `inf`): the Python package's and
+    /// other array callers' per-row check.
+    ///
+    /// # Errors
+    /// The message for the row, naming the key.
+    #[inline]
+    pub fn check_number(self, x: f64) -> Result<f64, InputError> {
+        // Every kind takes a finite number: the key's kind is asked only of the rest.
+        if x.is_finite() || (self.kind() == Kind::Radius && x == f64::INFINITY) {
+            Ok(x)
+        } else {
+            Err(self.not_finite(x))
+        }
+    }
+
+    /// The message for a number [`Key::check_number`] rejects.
+    #[cold]
+    fn not_finite(self, x: f64) -> InputError {
+        InputError::new(self.name(), format!("'{x}' is not a finite number"))
     }
 }
 

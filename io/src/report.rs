@@ -383,14 +383,35 @@ pub fn write_csv_empty(out: &mut Vec<u8>, mode: Mode, ground: bool) {
 /// Appends the result values of `r` in [`csv_columns`] order as numbers (counts as
 /// floats, `still_rolling` as 1/0, what `r` lacks as NaN): the Python package's arrays.
 pub fn csv_values(out: &mut Vec<f64>, mode: Mode, ground: bool, r: &Report) {
-    visit_fields(mode, ground, Some(r), |_, cell| {
-        out.push(match cell {
-            Cell::Real(x) => x,
-            Cell::Count(n) => f64::from(n),
-            Cell::Flag(b) => f64::from(u8::from(b)),
-            Cell::Missing => f64::NAN,
-        });
-    });
+    visit_fields(mode, ground, Some(r), |_, cell| out.push(cell_value(cell)));
+}
+
+/// As [`csv_values`], into `out` in place: `out` holds one value per [`csv_columns`]
+/// entry (what it has beyond them is left as it is).
+pub fn write_values(out: &mut [f64], mode: Mode, ground: bool, r: &Report) {
+    let mut slots = out.iter_mut();
+    visit_fields(
+        mode,
+        ground,
+        Some(r),
+        #[inline(always)]
+        |_, cell| {
+            if let Some(slot) = slots.next() {
+                *slot = cell_value(cell);
+            }
+        },
+    );
+}
+
+/// A cell as a number: counts as floats, `still_rolling` as 1/0, a missing value as NaN.
+#[inline(always)]
+fn cell_value(cell: Cell) -> f64 {
+    match cell {
+        Cell::Real(x) => x,
+        Cell::Count(n) => f64::from(n),
+        Cell::Flag(b) => f64::from(u8::from(b)),
+        Cell::Missing => f64::NAN,
+    }
 }
 
 /// One CSV header plus one row (the `--csv` output of a single command).

@@ -338,16 +338,5 @@ pub fn request(
 /// # Errors
 /// The message for the row, naming the key.
 pub fn check_value(key: Key, x: f64) -> Result<Value, InputError> {
-    let ok = match key.kind() {
-        Kind::Radius => !x.is_nan() && x != f64::NEG_INFINITY,
-        _ => x.is_finite(),
-    };
-    if ok {
-        Ok(Value::Number(x))
-    } else {
-        Err(InputError::new(
-            key.name(),
-            format!("'{x}' is not a finite number"),
-        ))
-    }
+    key.check_number(x).map(Value::Number)
 }

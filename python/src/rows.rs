@@ -1,11 +1,10 @@
 //! The rows of one call, computed in parallel (rayon, all cores) into columns.
 
-use crate::args::{Request, check_value};
+use crate::args::Request;
 use carry_core::lanes::LaneReal;
-use carry_io::compute::{self, Precision};
-use carry_io::error::InputError;
-use carry_io::params::Params;
-use carry_io::report::{csv_columns, csv_values};
+use carry_io::columns::{Columns, run_block};
+use carry_io::compute::Precision;
+use carry_io::report::csv_columns;
 use rayon::prelude::*;
 
 /// Rows per parallel work item.
@@ -23,18 +22,9 @@ pub struct Output {
     pub failed: Vec<(usize, String)>,
 }
 
-/// The parameters of row `i`: the shared options with the row's numbers.
-fn params(req: &Request, columns: &[&[f64]], i: usize) -> Result<Params, InputError> {
-    let mut p = req.base;
-    for (key, column) in req.keys.iter().zip(columns) {
-        let value = check_value(*key, column[i])?;
-        key.set(&mut p, req.units, value);
-    }
-    Ok(p)
-}
-
 /// Computes the rows from `first` into `out` (row-major, `width` values a row) in
-/// precision `T`; returns the failed rows.
+/// precision `T` (carry-io's [`run_block`]: the flights in the core's lanes kernel
+/// where it covers them, issue 37); returns the failed rows.
 fn block<T: LaneReal>(
     req: &Request,
     columns: &[&[f64]],
@@ -42,39 +32,24 @@ fn block<T: LaneReal>(
     out: &mut [f64],
     width: usize,
 ) -> Vec<(usize, String)> {
-    let mut failed = Vec::new();
-    let mut row = Vec::with_capacity(width);
-    let rows = out.len() / width.max(1);
-    // The block's rows together: the flights in the core's lanes kernel where it covers
-    // them (issue 37); a row whose scene cannot be shared is prepared on its own.
-    let parsed: Vec<Result<Params, InputError>> = (first..first + rows)
-        .map(|i| params(req, columns, i))
-        .collect();
-    let good: Vec<Params> = parsed
-        .iter()
-        .filter_map(|p| p.as_ref().ok().copied())
-        .collect();
-    let mut reports = compute::run_rows_in::<T>(req.mode, &good, &req.numerics).into_iter();
-    for (k, (slot, p)) in out.chunks_exact_mut(width).zip(parsed).enumerate() {
-        let i = first + k;
-        let result = p.and_then(|_| {
-            reports
-                .next()
-                .unwrap_or_else(|| Err(InputError::new("input", "row not computed")))
-        });
-        match result {
-            Ok(r) => {
-                row.clear();
-                csv_values(&mut row, req.mode, req.ground, &r);
-                slot.copy_from_slice(&row);
-            }
-            Err(e) => {
-                slot.fill(f64::NAN);
-                failed.push((i, e.as_column()));
-            }
-        }
-    }
-    failed
+    let cols = Columns {
+        base: &req.base,
+        units: req.units,
+        keys: &req.keys,
+        values: columns,
+    };
+    run_block::<T>(
+        req.mode,
+        &cols,
+        &req.numerics,
+        req.ground,
+        first,
+        out,
+        width,
+    )
+    .into_iter()
+    .map(|(i, e)| (i, e.as_column()))
+    .collect()
 }
 
 /// Runs `req` over `rows` rows; `columns[j]` holds the values of `req.keys[j]`, each of
