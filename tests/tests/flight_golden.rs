@@ -426,3 +426,86 @@ fn max_deviations() {
     show::<f64>("f64 tight", &Integrator::tight());
     show::<f32>("f32 default", &Integrator::default());
 }
+
+/// Worst |error| over the golden set of each field the default-fidelity test checks
+/// (carry, carry along X, side, apex, flight time, apex time, landing angle, spin, speed).
+fn worst_fields<T: Real>(integrator: &Integrator<T>) -> ([f64; 9], u64) {
+    let mut w = [0.0_f64; 9];
+    let mut evals = 0_u64;
+    for case in load() {
+        let out = run(&case, integrator).unwrap_or_else(|e| panic!("{}: {e}", case.name));
+        let e = &case.expected;
+        let d = [
+            f(out.carry_m) - e.carry_m,
+            f(out.carry_x_m) - e.carry_x_m,
+            f(out.side_m) - e.side_m,
+            f(out.apex_m) - e.apex_m,
+            f(out.flight_time_s) - e.flight_time_s,
+            f(out.apex_time_s) - e.apex_time_s,
+            f(to_deg(out.landing_angle_rad)) - e.land_angle_deg,
+            f(to_rpm(out.landing_spin_radps)) - e.land_spin_rpm,
+            f(out.landing_speed_mps) - e.land_speed_mps,
+        ];
+        for (w, d) in w.iter_mut().zip(d) {
+            *w = w.max(d.abs());
+        }
+        evals += u64::from(out.stats.force_evaluations);
+    }
+    (w, evals)
+}
+
+/// The f64 default fidelity's tolerance against the golden set's checks, with the first
+/// step by the default's rule `3.5 s·tol^(1/5)` (docs/flight.md, *Default integrator*):
+/// `cargo test -p carry-tests --release --test flight_golden default_tolerance -- --ignored --nocapture`.
+#[test]
+#[ignore = "prints the default tolerance's table"]
+fn default_tolerance() {
+    let n = load().len() as f64;
+    let limits = [
+        F64_DEFAULT.distance,
+        F64_DEFAULT.distance,
+        F64_DEFAULT.distance,
+        F64_DEFAULT.apex,
+        F64_DEFAULT.time,
+        F64_DEFAULT.apex_time,
+        F64_DEFAULT.angle,
+        F64_DEFAULT.spin,
+        F64_DEFAULT.speed,
+    ];
+    println!(
+        "tol      first  evals | carry    carry_x  side     apex     time     apex_t   angle    spin     speed  (worst / limit)"
+    );
+    let list = |k: &str, d: &str| -> Vec<f64> {
+        std::env::var(k)
+            .unwrap_or_else(|_| d.into())
+            .split(',')
+            .filter_map(|x| x.parse().ok())
+            .collect()
+    };
+    for atol in list("ATOL", "0") {
+        for tol in list("RTOL", "4e-5,5e-5,6e-5,7e-5,8e-5,9e-5,1e-4,1.2e-4,1.5e-4") {
+            let atol = if atol > 0.0 { atol } else { tol };
+            let first = (carry_core::integrator::INITIAL_STEP_SCALE_S * tol.powf(0.2) * 100.0)
+                .round()
+                / 100.0;
+            print!("atol {atol:.1e} ");
+            let i = Integrator::DormandPrince {
+                rtol: tol,
+                atol,
+                initial_step_s: first,
+                max_step_s: f64::MAX,
+            };
+            let (w, e) = worst_fields::<f64>(&i);
+            let cells: Vec<String> = w
+                .iter()
+                .zip(limits)
+                .map(|(w, l)| format!("{:.2}", w / l))
+                .collect();
+            println!(
+                "{tol:.1e} {first:.2} s {:5.1} | {}",
+                e as f64 / n,
+                cells.join("     ")
+            );
+        }
+    }
+}

@@ -319,6 +319,19 @@ impl<'r, 'b, T: Real> Tracker<'r, 'b, T> {
         Ok(landing)
     }
 
+    /// Whether [`on_step`](Self::on_step) would do nothing with this step: a flight's
+    /// (not a hop's) step that holds neither the apex nor the landing (its own tests),
+    /// without a recording. Inlined into the step loop on hosts, so that most steps make
+    /// no call (a call there spills the loop's live SSE registers, all caller-saved).
+    #[inline(always)]
+    pub(crate) fn quiet(&self, step: &Step<'_, T>) -> bool {
+        let (y0, y1) = (step.y0, step.y1);
+        self.plane.is_none()
+            && self.recorder.is_none()
+            && !(y0[VY] > T::zero() && y1[VY] <= T::zero())
+            && !(y1[Y] <= self.landing_height)
+    }
+
     /// Whether the step ends below the landing height (a hop's: its plane), so that the
     /// landing is in it (or was at its start): one comparison, in every step.
     #[inline(always)]
