@@ -1,6 +1,6 @@
 //! Quick timing of the lanes kernel against the scalar path (medians of repeated runs over
 //! 1,024 launches, one thread): `cargo run --release -p carry-core --example lanes_timing`,
-//! optionally with one path's name (`scalar`, `avx`, `lanes`, or in `f32`: `scalar32`,
+//! optionally with one path's name (`scalar`, `avx`, `fma` (AVX and FMA), `lanes`, or in `f32`: `scalar32`,
 //! `avx32`, `lanes32`). The criterion bench (`--bench lanes`) is the reference; this is for
 //! profiling.
 use carry_core::lanes::{self, Shot};
@@ -80,6 +80,18 @@ fn main() {
     time("avx", &|| {
         let mut c = 0.0;
         lanes::fly_each_on(cpu, &shots, &integrator, |_, r| {
+            c += r.map_or(0.0, |o| o.carry_m)
+        });
+        c
+    });
+    // AVX with FMA where the CPU has it (`carry_io::lanes::cpu`'s choice).
+    #[allow(unsafe_code)]
+    // SAFETY: `with_fma_unchecked` requires FMA, which was just detected.
+    let fma = cpu.filter(|_| is_x86_feature_detected!("fma"))
+        .map(|c| unsafe { c.with_fma_unchecked() });
+    time("fma", &|| {
+        let mut c = 0.0;
+        lanes::fly_each_on(fma, &shots, &integrator, |_, r| {
             c += r.map_or(0.0, |o| o.carry_m)
         });
         c

@@ -129,16 +129,24 @@ impl LaneReal for f32 {
     }
 }
 
-/// A proof that the CPU running the program has AVX (x86-64): with it, [`fly_each_on`]
-/// flies shots on 256-bit packs compiled for AVX whatever the build's baseline (the
-/// `x86-64` baseline has SSE2 only). The core is `no_std` and cannot ask the CPU; a host
-/// makes one after `is_x86_feature_detected!("avx")` (`carry_io::lanes`). On other
-/// architectures it exists but changes nothing.
-#[derive(Debug, Clone, Copy)]
-pub struct Avx(());
+/// A proof that the CPU running the program has AVX (x86-64), and perhaps FMA: with it,
+/// [`fly_each_on`] flies shots on 256-bit packs compiled for AVX whatever the build's
+/// baseline (the `x86-64` baseline has SSE2 only). The core is `no_std` and cannot ask the
+/// CPU; a host makes one after `is_x86_feature_detected!("avx")` (and `"fma"`:
+/// `carry_io::lanes`). On other architectures it exists but changes nothing.
+///
+/// Without FMA ([`Avx::new_unchecked`], [`Avx::exact`]) every `f64` and `f32` result is the
+/// scalar path's bit for bit. With FMA ([`Avx::with_fma_unchecked`]) the `f64` kernel fuses
+/// its multiply–adds (one rounding instead of two): faster, and each figure within 1e-9
+/// relative of the scalar path's rather than equal (docs/performance.md, "Lanes kernel";
+/// `f32` stays exact).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Avx {
+    fma: bool,
+}
 
 impl Avx {
-    /// The token.
+    /// The token (AVX, no FMA: results bit for bit the scalar path's).
     ///
     /// # Safety
     /// The CPU that runs the program must have AVX (and the OS must save its registers):
@@ -146,7 +154,30 @@ impl Avx {
     #[allow(unsafe_code)]
     #[must_use]
     pub const unsafe fn new_unchecked() -> Self {
-        Self(())
+        Self { fma: false }
+    }
+
+    /// The token with FMA: the `f64` kernel fuses its multiply–adds.
+    ///
+    /// # Safety
+    /// The CPU that runs the program must also have FMA (FMA3): what
+    /// `std::is_x86_feature_detected!("fma")` checks.
+    #[allow(unsafe_code)]
+    #[must_use]
+    pub const unsafe fn with_fma_unchecked(self) -> Self {
+        Self { fma: true }
+    }
+
+    /// The token without FMA: the packs whose results are the scalar path's bit for bit.
+    #[must_use]
+    pub const fn exact(self) -> Self {
+        Self { fma: false }
+    }
+
+    /// Whether the `f64` kernel fuses its multiply–adds with this token.
+    #[must_use]
+    pub const fn fma(self) -> bool {
+        self.fma
     }
 }
 
