@@ -349,6 +349,13 @@ enum Event<T: Real> {
 /// `inv_root_3_16`).
 #[inline(always)]
 fn inv_root_3_16<P: Pack>(x: P) -> P {
+    if P::FUSED {
+        // (The fused packs, whose results need only be within 1e-9: the same value to an
+        // ulp or two, `x^(1/16) · (1/x^(1/4))`, the division beside the last two roots
+        // rather than after them.)
+        let r4 = x.sqrt().sqrt();
+        return r4.sqrt().sqrt() * (P::splat(lit(1.0)) / r4);
+    }
     let r8 = x.sqrt().sqrt().sqrt();
     P::splat(lit(1.0)) / (r8 * r8.sqrt())
 }
