@@ -124,7 +124,10 @@ fn main() {
         .and_then(|s| s.parse().ok())
         .unwrap_or(1_000_000);
     let ball = Ball::standard();
-    for (set, random_tolerance) in [("default integrator", false), ("tolerance 1e-10..1e-2", true)] {
+    for (set, random_tolerance) in [
+        ("default integrator", false),
+        ("tolerance 1e-10..1e-2", true),
+    ] {
         let mut r = Rng(if random_tolerance { 2 } else { 1 });
         let (mut flights, mut errors, mut over, mut restepped, mut kind) = (0, 0, 0, 0, 0);
         let mut worst = [0.0_f64; 7];

@@ -72,7 +72,8 @@ fn main() {
         t.sort_by(f64::total_cmp);
         println!(
             "{name}: median {:.3} us/shot (fastest pass {:.3})",
-            t[runs / 2], t[0]
+            t[runs / 2],
+            t[0]
         );
     };
     time("scalar", &|| {
@@ -96,7 +97,8 @@ fn main() {
     // AVX with FMA where the CPU has it (`carry_io::lanes::cpu`'s choice).
     #[allow(unsafe_code)]
     // SAFETY: `with_fma_unchecked` requires FMA, which was just detected.
-    let fma = cpu.filter(|_| is_x86_feature_detected!("fma"))
+    let fma = cpu
+        .filter(|_| is_x86_feature_detected!("fma"))
         .map(|c| unsafe { c.with_fma_unchecked() });
     time("fma", &|| {
         let mut c = 0.0;

@@ -908,7 +908,10 @@ fn batch_keeps_order_reports_bad_rows_and_matches_single_runs() {
 fn close_json(a: &Value, b: &Value) {
     match (a, b) {
         (Value::Number(x), Value::Number(y)) => {
-            let (x, y) = (x.as_f64().unwrap_or(f64::NAN), y.as_f64().unwrap_or(f64::NAN));
+            let (x, y) = (
+                x.as_f64().unwrap_or(f64::NAN),
+                y.as_f64().unwrap_or(f64::NAN),
+            );
             assert!((x - y).abs() <= 1e-9 * y.abs().max(1.0), "{x} against {y}");
         }
         (Value::Array(x), Value::Array(y)) => {

@@ -79,7 +79,10 @@ fn close(a: &serde_json::Value, b: &serde_json::Value) {
     use serde_json::Value;
     match (a, b) {
         (Value::Number(x), Value::Number(y)) => {
-            let (x, y) = (x.as_f64().unwrap_or(f64::NAN), y.as_f64().unwrap_or(f64::NAN));
+            let (x, y) = (
+                x.as_f64().unwrap_or(f64::NAN),
+                y.as_f64().unwrap_or(f64::NAN),
+            );
             assert!((x - y).abs() <= 1e-9 * y.abs().max(1.0), "{x} against {y}");
         }
         (Value::Array(x), Value::Array(y)) => {

@@ -23,7 +23,9 @@
 //! (the same IEEE 754 operations on the same operands, packed or not), so its outcome is
 //! the scalar [`PreparedScene::fly`]'s bit for bit: carry, side, apex, times, angles,
 //! speeds and the work counted (`tests/tests/lanes.rs` checks equality to 1e-9 relative
-//! and counts the bit-identical results).
+//! and counts the bit-identical results). The one exception is an [`Avx`] token with FMA
+//! ([`Avx::with_fma_unchecked`]): its `f64` kernel fuses multiply–adds, and its results
+//! are within 1e-9 relative of the scalar path's, not equal ([`Avx::exact`] drops FMA).
 //!
 //! ```
 //! use carry_core::{Ball, Launch, Integrator, Scene, lanes::{self, Shot}, units::{deg, rpm}};
@@ -182,8 +184,9 @@ impl Avx {
 }
 
 /// [`fly_each`] on the fastest packs `cpu` allows: with an [`Avx`] token, shots fly on AVX
-/// packs (four `f64` or eight `f32` lanes; the same results bit for bit; docs/performance.md,
-/// "Lanes kernel"); without one, as [`fly_each`].
+/// packs (four `f64` or eight `f32` lanes; the same results bit for bit, or in `f64` with
+/// a token with FMA within 1e-9 relative; docs/performance.md, "Lanes kernel"); without one,
+/// as [`fly_each`].
 pub fn fly_each_on<T: LaneReal>(
     cpu: Option<Avx>,
     shots: &[Shot<'_, T>],
