@@ -2,7 +2,8 @@
 //! drivers, hooks and slices, in still air and in a uniform wind) flown one by one with
 //! `PreparedScene::fly`, through `lanes::fly_each` (4 lanes on the build's baseline packs:
 //! SSE2 on x86-64) and, where the CPU has AVX, through `lanes::fly_each_on` with the AVX
-//! token (what `carry batch` and the Python package run; `carry_io::lanes`), one thread.
+//! token, exact (`lanes-avx`) and with FMA where the CPU has it (`lanes-fma`: what
+//! `carry batch` and the Python package run; `carry_io::lanes`), one thread.
 //! Throughput is per shot.
 //!
 //! `cargo bench -p carry-core --bench lanes`; figures in docs/performance.md ("Lanes kernel").
@@ -83,8 +84,13 @@ fn bench(c: &mut Criterion) {
                 carry
             })
         });
-        if let Some(cpu) = avx() {
-            g.bench_function("lanes-avx", |b| {
+        let fma = avx().filter(|_| is_x86_feature_detected!("fma"));
+        #[allow(unsafe_code)]
+        // SAFETY: `with_fma_unchecked` requires FMA, which was just detected.
+        let fma = fma.map(|c| unsafe { c.with_fma_unchecked() });
+        for (name, cpu) in [("lanes-avx", avx()), ("lanes-fma", fma)] {
+            let Some(cpu) = cpu else { continue };
+            g.bench_function(name, |b| {
                 b.iter(|| {
                     let mut carry = 0.0;
                     lanes::fly_each_on(Some(cpu), black_box(&shots), &integrator, |_, r| {

@@ -1,7 +1,8 @@
 //! Quick timing of the lanes kernel against the scalar path (medians of repeated runs over
 //! 1,024 launches, one thread): `cargo run --release -p carry-core --example lanes_timing`,
-//! optionally with one path's name (`scalar`, `avx`, `lanes`, or in `f32`: `scalar32`,
-//! `avx32`, `lanes32`). The criterion bench (`--bench lanes`) is the reference; this is for
+//! optionally with one path's name (`scalar`, `avx`, `fma` (AVX and FMA), `lanes`, or in `f32`: `scalar32`,
+//! `avx32`, `lanes32`) and
+//! a number of passes. The criterion bench (`--bench lanes`) is the reference; this is for
 //! profiling.
 use carry_core::lanes::{self, Shot};
 use carry_core::units::{deg, rpm};
@@ -51,7 +52,12 @@ fn main() {
         steps as f64 / n as f64
     );
     let only = std::env::args().nth(1);
-    let runs = 15;
+    // Passes (15 unless a second argument says; many passes make the process's CPU time,
+    // `/usr/bin/time -f %U`, a measure that a loaded machine's waits do not inflate).
+    let runs = std::env::args()
+        .nth(2)
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(15);
     let time = |name: &str, f: &dyn Fn() -> f64| {
         if only.as_deref().is_some_and(|o| o != name) {
             return;
@@ -64,7 +70,11 @@ fn main() {
             })
             .collect();
         t.sort_by(f64::total_cmp);
-        println!("{name}: median {:.3} us/shot", t[runs / 2]);
+        println!(
+            "{name}: median {:.3} us/shot (fastest pass {:.3})",
+            t[runs / 2],
+            t[0]
+        );
     };
     time("scalar", &|| {
         shots
@@ -80,6 +90,19 @@ fn main() {
     time("avx", &|| {
         let mut c = 0.0;
         lanes::fly_each_on(cpu, &shots, &integrator, |_, r| {
+            c += r.map_or(0.0, |o| o.carry_m)
+        });
+        c
+    });
+    // AVX with FMA where the CPU has it (`carry_io::lanes::cpu`'s choice).
+    #[allow(unsafe_code)]
+    // SAFETY: `with_fma_unchecked` requires FMA, which was just detected.
+    let fma = cpu
+        .filter(|_| is_x86_feature_detected!("fma"))
+        .map(|c| unsafe { c.with_fma_unchecked() });
+    time("fma", &|| {
+        let mut c = 0.0;
+        lanes::fly_each_on(fma, &shots, &integrator, |_, r| {
             c += r.map_or(0.0, |o| o.carry_m)
         });
         c

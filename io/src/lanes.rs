@@ -2,17 +2,36 @@
 //! has: the host's runtime dispatch. The core is `no_std` and cannot ask the CPU; here
 //! `std` checks it once (`is_x86_feature_detected!`, cached by `std`) and hands the core an
 //! [`Avx`] token where the CPU has AVX, so batches (`f64` and `f32`) fly on 256-bit packs
-//! compiled for AVX even in a baseline x86-64 build (which has SSE2 only). The results are
-//! the same bit for bit (docs/performance.md, "Lanes kernel"). `carry batch`, the Python
+//! compiled for AVX even in a baseline x86-64 build (which has SSE2 only); where it has FMA
+//! too, the token says so and the `f64` kernel fuses its multiply–adds. The results are the
+//! scalar path's bit for bit without FMA (and in `f32`), within 1e-9 relative with it
+//! (docs/performance.md, "Lanes kernel"; [`cpu_exact`] picks the exact packs). `carry batch`, the Python
 //! package and the Dask example reach the kernel through [`crate::compute::run_rows`],
 //! which calls [`fly_each`].
 
 use carry_core::lanes::{self, Avx, LaneReal, Shot};
 use carry_core::{FlightOutcome, Integrator, Result};
 
-/// The AVX token where the CPU running this program has AVX (x86-64), else `None`.
+/// The AVX token where the CPU running this program has AVX (x86-64), with FMA where it
+/// has FMA too, else `None`.
 #[must_use]
 pub fn cpu() -> Option<Avx> {
+    #[cfg(target_arch = "x86_64")]
+    if let Some(avx) = cpu_exact()
+        && std::is_x86_feature_detected!("fma")
+    {
+        // SAFETY: `with_fma_unchecked` requires a CPU with FMA, which
+        // `is_x86_feature_detected!("fma")` has just confirmed.
+        #[allow(unsafe_code)]
+        return Some(unsafe { avx.with_fma_unchecked() });
+    }
+    cpu_exact()
+}
+
+/// The AVX token without FMA (the packs whose results are the scalar path's bit for bit)
+/// where the CPU running this program has AVX, else `None`.
+#[must_use]
+pub fn cpu_exact() -> Option<Avx> {
     #[cfg(target_arch = "x86_64")]
     if std::is_x86_feature_detected!("avx") {
         // SAFETY: `Avx::new_unchecked` requires a CPU (and OS) with AVX, which
@@ -24,7 +43,7 @@ pub fn cpu() -> Option<Avx> {
 }
 
 /// [`carry_core::lanes::fly_each`] on the fastest packs of this CPU ([`cpu`]); the same
-/// results, each handed to `sink` with its shot's index.
+/// results (within 1e-9 relative with FMA), each handed to `sink` with its shot's index.
 pub fn fly_each<T: LaneReal>(
     shots: &[Shot<'_, T>],
     integrator: &Integrator<T>,

@@ -113,17 +113,25 @@ fn fly_lanes_on<T: LaneReal>(
 }
 
 /// Every shot's result through `lanes::fly_each` (the build's baseline packs), in input
-/// order; where the CPU has AVX, also through the AVX packs (`carry_io::lanes::cpu`), which
-/// must give the very same results.
+/// order; where the CPU has AVX, also through the exact AVX packs (`Avx::exact`), which
+/// must give the very same results, and where it has FMA too, through the fused packs
+/// (`carry_io::lanes::cpu`'s choice), whose results must be within 1e-9 of them
+/// ([`close`]).
 fn fly_lanes<T: LaneReal>(
     shots: &[Shot<'_, T>],
     integrator: &Integrator<T>,
 ) -> Vec<Result<FlightOutcome<T>>> {
     let base = fly_lanes_on(None, shots, integrator);
     if let Some(cpu) = carry_io::lanes::cpu() {
-        let avx = fly_lanes_on(Some(cpu), shots, integrator);
+        let avx = fly_lanes_on(Some(cpu.exact()), shots, integrator);
         for (i, (a, b)) in avx.iter().zip(&base).enumerate() {
             assert_eq!(a, b, "shot {i}: AVX packs against the baseline ones");
+        }
+        if cpu.fma() {
+            let fused = fly_lanes_on(Some(cpu), shots, integrator);
+            for (i, (a, b)) in fused.iter().zip(&base).enumerate() {
+                close(a, b, 1e-9, &format!("shot {i}: AVX and FMA packs"));
+            }
         }
     }
     let mut plain: Vec<Option<Result<FlightOutcome<T>>>> = vec![None; shots.len()];
@@ -177,9 +185,46 @@ fn lanes_fail_in_the_air_as_the_scalar_path_does() {
     assert!(underflows >= 10, "{underflows} step-size underflows");
 }
 
-/// Compares each lanes result with the scalar one: the same error, or the figures within
-/// `rel` (relative, at least 1 m or 1 s or 1 rad of scale); returns how many outcomes are
-/// the scalar ones bit for bit.
+/// The same error, or the figures within `rel` (relative, at least 1 m or 1 s or 1 rad of
+/// scale); whether the outcomes are equal bit for bit.
+fn close<T: Real>(
+    got: &Result<FlightOutcome<T>>,
+    want: &Result<FlightOutcome<T>>,
+    rel: f64,
+    what: &str,
+) -> bool {
+    match (got, want) {
+        (Ok(g), Ok(w)) => {
+            let figures = |o: &FlightOutcome<T>| {
+                [
+                    o.carry_m,
+                    o.side_m,
+                    o.apex_m,
+                    o.apex_time_s,
+                    o.flight_time_s,
+                    o.landing_angle_rad,
+                    o.landing_speed_mps,
+                ]
+                .map(to_f64)
+            };
+            for (k, (a, b)) in figures(g).iter().zip(figures(w)).enumerate() {
+                assert!(
+                    (a - b).abs() <= rel * b.abs().max(1.0),
+                    "{what}: figure {k}: {a} against {b}"
+                );
+            }
+            g == w
+        }
+        (Err(a), Err(b)) => {
+            assert_eq!(a, b, "{what}");
+            false
+        }
+        _ => panic!("{what}: {got:?} against {want:?}"),
+    }
+}
+
+/// Compares each lanes result with the scalar one ([`close`]); returns how many outcomes
+/// are the scalar ones bit for bit.
 fn compare<T: Real>(
     shots: &[Shot<'_, T>],
     integrator: &Integrator<T>,
@@ -189,31 +234,7 @@ fn compare<T: Real>(
     let mut identical = 0;
     for (i, (shot, got)) in shots.iter().zip(lanes).enumerate() {
         let want = shot.scene.fly(&shot.launch, integrator, None);
-        match (got, &want) {
-            (Ok(g), Ok(w)) => {
-                let figures = |o: &FlightOutcome<T>| {
-                    [
-                        o.carry_m,
-                        o.side_m,
-                        o.apex_m,
-                        o.apex_time_s,
-                        o.flight_time_s,
-                        o.landing_angle_rad,
-                        o.landing_speed_mps,
-                    ]
-                    .map(to_f64)
-                };
-                for (k, (a, b)) in figures(g).iter().zip(figures(w)).enumerate() {
-                    assert!(
-                        (a - b).abs() <= rel * b.abs().max(1.0),
-                        "shot {i} figure {k}: lanes {a}, scalar {b}"
-                    );
-                }
-                identical += usize::from(g == w);
-            }
-            (Err(a), Err(b)) => assert_eq!(a, b, "shot {i}"),
-            _ => panic!("shot {i}: lanes {got:?}, scalar {want:?}"),
-        }
+        identical += usize::from(close(got, &want, rel, &format!("shot {i}: lanes, scalar")));
     }
     identical
 }

@@ -10,7 +10,10 @@
 //! The spin laws' piece is a blend, not a branch. IEEE 754 arithmetic is the same packed or
 //! scalar (and Rust never fuses a multiply and an add on its own), so a lane's numbers are
 //! the scalar path's bit for bit. Negation flips the sign bit (`wide`'s `-x` is `0 − x`,
-//! which loses the sign of a zero).
+//! which loses the sign of a zero). The multiply–adds are written [`Pack::mul_add`] and
+//! its kin: a product and a sum on every pack but the AVX one with FMA ([`Pack::FUSED`]),
+//! which fuses them and, where `FUSED` says so, takes shorter paths of its own (results
+//! within 1e-9 of the scalar path's rather than equal).
 
 use crate::real::{Real, lit};
 use core::ops::{Add, BitAnd, BitOr, BitXor, Div, Mul, Not, Sub};
@@ -64,6 +67,28 @@ pub trait Pack:
     /// The mask of the lanes whose bit is set in `bits`.
     #[must_use]
     fn mask(bits: u32) -> Self;
+    /// Whether [`Pack::mul_add`], [`Pack::mul_sub`] and [`Pack::neg_mul_add`] fuse (one
+    /// rounding: the AVX pack with FMA); else each is the product rounded, then the sum,
+    /// the very operations the scalar path writes as `a·b + c`, `a·b − c`, `c − a·b`.
+    const FUSED: bool = false;
+    /// `self·b + c` (`c + self·b` unfused: IEEE addition commutes bit for bit).
+    #[inline(always)]
+    #[must_use]
+    fn mul_add(self, b: Self, c: Self) -> Self {
+        self * b + c
+    }
+    /// `self·b − c`.
+    #[inline(always)]
+    #[must_use]
+    fn mul_sub(self, b: Self, c: Self) -> Self {
+        self * b - c
+    }
+    /// `c − self·b`.
+    #[inline(always)]
+    #[must_use]
+    fn neg_mul_add(self, b: Self, c: Self) -> Self {
+        c - self * b
+    }
 }
 
 macro_rules! pack {
@@ -221,7 +246,7 @@ pub(crate) fn eval<P: Pack>(f: &Field<P>, y: &States<P>) -> States<P> {
     let rx = vx - f.wind[0];
     let ry = vy - f.wind[1];
     let rz = vz - f.wind[2];
-    let speed_sq = (rx * rx + ry * ry) + rz * rz;
+    let speed_sq = rz.mul_add(rz, rx.mul_add(rx, ry * ry));
     let speed = speed_sq.sqrt();
     // The spin laws' piece (`SpinLaws::piece`), blended rather than branched on: past both
     // saturations the laws are (0, α₀).
@@ -245,18 +270,36 @@ pub(crate) fn eval<P: Pack>(f: &Field<P>, y: &States<P>) -> States<P> {
         pick(rising, second, rd.0, qd.0, zero),
         pick(rising, second, rd.1, qd.1, f.saturated_drag),
     );
-    let crisis = f.crisis_below / (one + (speed_sq * speed_sq) * (speed_sq * f.crisis_k6));
-    let kd = (drag_0 + f.drag_v * speed) + (drag_1 * speed + crisis * speed);
-    let kl = lift_0 + lift_1 * speed;
+    let crisis = f.crisis_below / (speed_sq * speed_sq).mul_add(speed_sq * f.crisis_k6, one);
+    let kd = f.drag_v.mul_add(speed, drag_0) + drag_1.mul_add(speed, crisis * speed);
+    let kl = lift_1.mul_add(speed, lift_0);
     let [ax, ay, az] = f.axis;
-    let (cx, cy, cz) = (ay * rz - az * ry, az * rx - ax * rz, ax * ry - ay * rx);
+    let (cx, cy, cz) = (
+        ay.mul_sub(rz, az * ry),
+        az.mul_sub(rx, ax * rz),
+        ax.mul_sub(ry, ay * rx),
+    );
+    if P::FUSED {
+        // Fused: `c·k_l − r·k_d` (and `(−g + c_y·k_l) − r_y·k_d`) with `k_d`, the last to be
+        // ready (it waits for the crisis's division and `V`), in the last instruction: one
+        // fused operation after it rather than two.
+        return [
+            vx,
+            vy,
+            vz,
+            rx.neg_mul_add(kd, cx * kl),
+            ry.neg_mul_add(kd, cy.mul_add(kl, f.minus_gravity)),
+            rz.neg_mul_add(kd, cz * kl),
+            neg(f.decay * speed) * s,
+        ];
+    }
     [
         vx,
         vy,
         vz,
-        (zero - rx * kd) + cx * kl,
-        (f.minus_gravity - ry * kd) + cy * kl,
-        (zero - rz * kd) + cz * kl,
+        cx.mul_add(kl, rx.neg_mul_add(kd, zero)),
+        cy.mul_add(kl, ry.neg_mul_add(kd, f.minus_gravity)),
+        cz.mul_add(kl, rz.neg_mul_add(kd, zero)),
         neg(f.decay * speed) * s,
     ]
 }
@@ -266,7 +309,10 @@ pub(crate) fn eval<P: Pack>(f: &Field<P>, y: &States<P>) -> States<P> {
 /// get its caller's target features, and its packed intrinsics would become calls.)
 #[inline(always)]
 fn law<P: Pack>(a: &[P; 5], k: P, u: P) -> (P, P) {
-    (k * (a[1] + a[3] * u), a[0] + u * (a[2] + a[4] * u))
+    (
+        k * a[3].mul_add(u, a[1]),
+        u.mul_add(a[4].mul_add(u, a[2]), a[0]),
+    )
 }
 
 /// The rising piece's `r` where `rising`, else the second piece's `q` where `second`, else
@@ -288,7 +334,7 @@ fn combine<P: Pack, const K: usize>(
     for (cj, kj) in c.iter().zip(k.iter()) {
         let w = h * P::splat(lit(*cj));
         for (o, x) in out.iter_mut().zip(kj.iter()) {
-            *o = *o + w * *x;
+            *o = w.mul_add(*x, *o);
         }
     }
     out
@@ -347,6 +393,12 @@ fn larger<P: Pack>(a: P, b: P) -> P {
     (a.lt(b) | a.ne(a)).blend(b, a)
 }
 
+/// `b` where `a < b`, else `a` (the larger of two numbers neither of which is NaN).
+#[inline(always)]
+fn larger_of<P: Pack>(a: P, b: P) -> P {
+    a.lt(b).blend(b, a)
+}
+
 /// One step of size `h[l]` from `y` (with `k₁ = f(y)`) in every lane: 6 evaluations.
 #[inline(always)]
 pub(crate) fn step<P: Pack>(
@@ -372,15 +424,39 @@ pub(crate) fn step<P: Pack>(
     let zero = P::splat(lit(0.0));
     let mut weight: States<P> = [zero; 7];
     for ((w, a), b) in weight.iter_mut().zip(y.iter()).zip(y1.iter()) {
-        *w = one / (atol + rtol * larger(a.abs(), b.abs()));
+        *w = one / rtol.mul_add(larger(a.abs(), b.abs()), atol);
     }
     let k7 = eval(fresh(f), &y1);
     let e = combine(&[zero; 7], h, E, [k1, &k3, &k4, &k5, &k6, &k7]);
+    let mut r = [zero; 7];
+    for ((ri, ei), wi) in r.iter_mut().zip(e.iter()).zip(weight.iter()) {
+        *ri = ei.abs() * *wi;
+    }
     let mut err = zero;
-    for (ei, wi) in e.iter().zip(weight.iter()) {
-        let r = ei.abs() * *wi;
+    if P::FUSED {
+        // The fused packs: the largest `rᵢ ≥ 0` by a tree (3 compares and blends deep
+        // rather than 7), the scalar fold's value where no `rᵢ` is NaN (a NaN sum says
+        // one is; the fold below then gives the scalar rule's result).
+        let sum = ((r[0] + r[1]) + (r[2] + r[3])) + ((r[4] + r[5]) + r[6]);
+        if sum.ne(sum).bits() == 0 {
+            err = larger_of(
+                larger_of(larger_of(r[0], r[1]), larger_of(r[2], r[3])),
+                larger_of(larger_of(r[4], r[5]), r[6]),
+            );
+            return Stages {
+                k3,
+                k4,
+                k5,
+                k6,
+                k7,
+                y1,
+                err,
+            };
+        }
+    }
+    for ri in r {
         // `!(r <= err)` also propagates NaN into a rejection (the scalar rule).
-        err = (!r.le(err)).blend(r, err);
+        err = (!ri.le(err)).blend(ri, err);
     }
     Stages {
         k3,
@@ -401,13 +477,13 @@ pub(crate) fn poly<P: Pack>(h: P, y0: P, y1: P, f0: P, f1: P, mid: [P; 4]) -> [P
     let [d1, d3, d4, d5, d6, d7] = crate::integrator::events::DP_DENSE;
     let [k3, k4, k5, k6] = mid;
     let r2 = y1 - y0;
-    let r3 = h * f0 - r2;
-    let r4 = (r2 - h * f1) - r3;
-    let mut sum = P::splat(lit(d1)) * f0 + P::splat(lit(d3)) * k3;
-    sum = sum + P::splat(lit(d4)) * k4;
-    sum = sum + P::splat(lit(d5)) * k5;
-    sum = sum + P::splat(lit(d6)) * k6;
-    let r5 = h * (sum + P::splat(lit(d7)) * f1);
+    let r3 = h.mul_sub(f0, r2);
+    let r4 = h.neg_mul_add(f1, r2) - r3;
+    let mut sum = P::splat(lit(d1)).mul_add(f0, P::splat(lit(d3)) * k3);
+    sum = P::splat(lit(d4)).mul_add(k4, sum);
+    sum = P::splat(lit(d5)).mul_add(k5, sum);
+    sum = P::splat(lit(d6)).mul_add(k6, sum);
+    let r5 = h * P::splat(lit(d7)).mul_add(f1, sum);
     [y0, r2, r3, r4, r5]
 }
 
@@ -417,7 +493,7 @@ pub(crate) fn poly<P: Pack>(h: P, y0: P, y1: P, f0: P, f1: P, mid: [P; 4]) -> [P
 pub(crate) fn at<P: Pack>(r: &[P; 5], th: P) -> P {
     let [r1, r2, r3, r4, r5] = *r;
     let th1 = P::splat(lit(1.0)) - th;
-    r1 + th * (r2 + th1 * (r3 + th * (r4 + th1 * r5)))
+    th.mul_add(th1.mul_add(th.mul_add(th1.mul_add(r5, r4), r3), r2), r1)
 }
 
 /// The interpolant's value and slope in `θ` in every lane (`Poly::with_slope`).
@@ -425,11 +501,11 @@ pub(crate) fn at<P: Pack>(r: &[P; 5], th: P) -> P {
 fn with_slope<P: Pack>(r: &[P; 5], th: P) -> (P, P) {
     let [r1, r2, r3, r4, r5] = *r;
     let th1 = P::splat(lit(1.0)) - th;
-    let c = r4 + th1 * r5;
-    let b = r3 + th * c;
-    let db = c - th * r5;
-    let (q, dq) = (r2 + th1 * b, th1 * db - b);
-    (r1 + th * q, q + th * dq)
+    let c = th1.mul_add(r5, r4);
+    let b = th.mul_add(c, r3);
+    let db = th.neg_mul_add(r5, c);
+    let (q, dq) = (th1.mul_add(b, r2), th1.mul_sub(db, b));
+    (th.mul_add(q, r1), th.mul_add(dq, q))
 }
 
 /// `integrator::events::find_root` in the lanes of the mask `live`, each on its own
@@ -450,6 +526,15 @@ pub(crate) fn find_root<T: Real, P: Pack<Scalar = T>>(
     let zero = P::splat(lit(0.0));
     let half = P::splat(lit(0.5));
     let tiny = P::splat(T::default_epsilon() * lit(4.0));
+    // The Newton step small enough to stop at: the scalar `4ε`, or on the fused packs
+    // (results within 1e-9, not bit for bit) `√ε`, one iteration sooner: the step taken
+    // then leaves an error of the order of its square (Newton's quadratic convergence),
+    // ≈ ε again, so the root moves by a few ulps rather than not at all.
+    let tiny_step = if P::FUSED {
+        P::splat(lit(1.0 / 67_108_864.0)) // 2⁻²⁶ = √ε of `f64` (the fused packs')
+    } else {
+        tiny
+    };
     let (mut a, mut b, mut fa) = (a, b, fa);
     // `fb == 0` returns `b` (`!(x ≠ 0)` is the ordered `x == 0`).
     let mut out = b;
@@ -457,7 +542,7 @@ pub(crate) fn find_root<T: Real, P: Pack<Scalar = T>>(
     let denom = fb - fa;
     let mut x = denom
         .ne(zero)
-        .blend((a * fb - b * fa) / denom, (a + b) * half);
+        .blend(a.mul_sub(fb, b * fa) / denom, (a + b) * half);
     for _ in 0..64 {
         if live.bits() == 0 {
             return out;
@@ -477,7 +562,7 @@ pub(crate) fn find_root<T: Real, P: Pack<Scalar = T>>(
         b = move_b.blend(x, b);
         let step = fx / slope;
         let next = x - step;
-        let stop = live & (step.abs().le(tiny) | (b - a).abs().le(tiny));
+        let stop = live & (step.abs().le(tiny_step) | (b - a).abs().le(tiny));
         let lt = a.lt(b);
         let (lo, hi) = (lt.blend(a, b), lt.blend(b, a));
         out = stop.blend((lo.lt(next) & next.lt(hi)).blend(next, x), out);

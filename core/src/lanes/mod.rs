@@ -23,7 +23,9 @@
 //! (the same IEEE 754 operations on the same operands, packed or not), so its outcome is
 //! the scalar [`PreparedScene::fly`]'s bit for bit: carry, side, apex, times, angles,
 //! speeds and the work counted (`tests/tests/lanes.rs` checks equality to 1e-9 relative
-//! and counts the bit-identical results).
+//! and counts the bit-identical results). The one exception is an [`Avx`] token with FMA
+//! ([`Avx::with_fma_unchecked`]): its `f64` kernel fuses multiply–adds, and its results
+//! are within 1e-9 relative of the scalar path's, not equal ([`Avx::exact`] drops FMA).
 //!
 //! ```
 //! use carry_core::{Ball, Launch, Integrator, Scene, lanes::{self, Shot}, units::{deg, rpm}};
@@ -129,16 +131,24 @@ impl LaneReal for f32 {
     }
 }
 
-/// A proof that the CPU running the program has AVX (x86-64): with it, [`fly_each_on`]
-/// flies shots on 256-bit packs compiled for AVX whatever the build's baseline (the
-/// `x86-64` baseline has SSE2 only). The core is `no_std` and cannot ask the CPU; a host
-/// makes one after `is_x86_feature_detected!("avx")` (`carry_io::lanes`). On other
-/// architectures it exists but changes nothing.
-#[derive(Debug, Clone, Copy)]
-pub struct Avx(());
+/// A proof that the CPU running the program has AVX (x86-64), and perhaps FMA: with it,
+/// [`fly_each_on`] flies shots on 256-bit packs compiled for AVX whatever the build's
+/// baseline (the `x86-64` baseline has SSE2 only). The core is `no_std` and cannot ask the
+/// CPU; a host makes one after `is_x86_feature_detected!("avx")` (and `"fma"`:
+/// `carry_io::lanes`). On other architectures it exists but changes nothing.
+///
+/// Without FMA ([`Avx::new_unchecked`], [`Avx::exact`]) every `f64` and `f32` result is the
+/// scalar path's bit for bit. With FMA ([`Avx::with_fma_unchecked`]) the `f64` kernel fuses
+/// its multiply–adds (one rounding instead of two): faster, and each figure within 1e-9
+/// relative of the scalar path's rather than equal (docs/performance.md, "Lanes kernel";
+/// `f32` stays exact).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Avx {
+    fma: bool,
+}
 
 impl Avx {
-    /// The token.
+    /// The token (AVX, no FMA: results bit for bit the scalar path's).
     ///
     /// # Safety
     /// The CPU that runs the program must have AVX (and the OS must save its registers):
@@ -146,13 +156,37 @@ impl Avx {
     #[allow(unsafe_code)]
     #[must_use]
     pub const unsafe fn new_unchecked() -> Self {
-        Self(())
+        Self { fma: false }
+    }
+
+    /// The token with FMA: the `f64` kernel fuses its multiply–adds.
+    ///
+    /// # Safety
+    /// The CPU that runs the program must also have FMA (FMA3): what
+    /// `std::is_x86_feature_detected!("fma")` checks.
+    #[allow(unsafe_code)]
+    #[must_use]
+    pub const unsafe fn with_fma_unchecked(self) -> Self {
+        Self { fma: true }
+    }
+
+    /// The token without FMA: the packs whose results are the scalar path's bit for bit.
+    #[must_use]
+    pub const fn exact(self) -> Self {
+        Self { fma: false }
+    }
+
+    /// Whether the `f64` kernel fuses its multiply–adds with this token.
+    #[must_use]
+    pub const fn fma(self) -> bool {
+        self.fma
     }
 }
 
 /// [`fly_each`] on the fastest packs `cpu` allows: with an [`Avx`] token, shots fly on AVX
-/// packs (four `f64` or eight `f32` lanes; the same results bit for bit; docs/performance.md,
-/// "Lanes kernel"); without one, as [`fly_each`].
+/// packs (four `f64` or eight `f32` lanes; the same results bit for bit, or in `f64` with
+/// a token with FMA within 1e-9 relative; docs/performance.md, "Lanes kernel"); without one,
+/// as [`fly_each`].
 pub fn fly_each_on<T: LaneReal>(
     cpu: Option<Avx>,
     shots: &[Shot<'_, T>],
@@ -318,6 +352,13 @@ enum Event<T: Real> {
 /// `inv_root_3_16`).
 #[inline(always)]
 fn inv_root_3_16<P: Pack>(x: P) -> P {
+    if P::FUSED {
+        // (The fused packs, whose results need only be within 1e-9: the same value to an
+        // ulp or two, `x^(1/16) · (1/x^(1/4))`, the division beside the last two roots
+        // rather than after them.)
+        let r4 = x.sqrt().sqrt();
+        return r4.sqrt().sqrt() * (P::splat(lit(1.0)) / r4);
+    }
     let r8 = x.sqrt().sqrt().sqrt();
     P::splat(lit(1.0)) / (r8 * r8.sqrt())
 }
