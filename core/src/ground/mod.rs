@@ -37,7 +37,7 @@ use normal::Normal;
 pub use surface::{CraterLaw, Surface, Turf};
 
 /// A rebound lower than this (m) ends the bouncing: the ball rolls (Penner 2002: 5 mm).
-pub const STOP_HEIGHT_M: f64 = 0.005;
+pub const STOP_HEIGHT_M: f64 = 0.02;
 /// At most this many hops; the ball then rolls (a bound on the run time, never reached by
 /// a golf shot: they stop within about ten).
 pub const MAX_BOUNCES: u32 = 64;
