@@ -23,7 +23,7 @@ use crate::integrator::events::Step;
 use crate::integrator::integrate::{
     Adaptive, Stages, dormand_prince_stages, error_weights, scaled_error,
 };
-use crate::real::{Real, all_finite, larger, lit};
+use crate::real::{Real, all_finite, at_least, lit};
 use crate::trajectory::{Contact, Plane, Recorder, Stats};
 use nalgebra::Vector3;
 
@@ -88,7 +88,7 @@ pub(crate) fn aimed_hop<T: Real>(
         (
             p1 + v1 * d + a1 * (half * d * d) + j1 * (lit::<T>(1.0 / 6.0) * d * d * d),
             v1 + a1 * d + j1 * (half * d * d),
-            larger(
+            at_least(
                 y1[S] + f1.spin_rate * d + spin_jerk * (half * d * d),
                 T::zero(),
             ),

@@ -38,7 +38,7 @@
 use super::normal::Normal;
 pub use super::surface::CRATER_FADE_NORMAL_SPEED_MPS;
 use super::surface::{CraterLaw, PENNER_RESTITUTION_0, Turf};
-use crate::real::{Real, larger, length, lit, smaller};
+use crate::real::{Real, at_least, at_most, length, lit};
 use nalgebra::Vector3;
 
 /// Penner's crater tilt at the reference impact (rad): 15.4°.
@@ -121,7 +121,7 @@ pub(crate) fn rebound<T: Real, N: Normal<T>>(
     turf: &Turf<T>,
     radius_m: T,
 ) -> Rebound<T> {
-    let vn = larger(-n.dot(velocity), T::zero());
+    let vn = at_least(-n.dot(velocity), T::zero());
     // The impact speed and the tangential speed from the squares, side by side (no
     // `hypot`: libm's single-precision one works in f64, software on a Cortex-M4F); with
     // them `u² + v_n'² = |v|²` below holds to rounding. The impact angle from the squares
@@ -140,7 +140,7 @@ pub(crate) fn rebound<T: Real, N: Normal<T>>(
     let w = spin.dot(&b);
     let phi = crate::geometry::atan2_first_quadrant_of_squares(vt_sq, vn * vn);
     // Faded out below the turf's fade speed (see the module docs).
-    let fade = smaller(vn / turf.crater_fade_mps, T::one());
+    let fade = at_most(vn / turf.crater_fade_mps, T::one());
     let tilt = match turf.crater_law {
         // θ_c = κ·15.4°·(v/18.6)·(φ/44.4°)·min(1, v_n/v_f): everything but φ first.
         CraterLaw::Penner => {
@@ -155,10 +155,12 @@ pub(crate) fn rebound<T: Real, N: Normal<T>>(
             turf.crater_scale * per_speed * (vt * vn) * fade / speed
         }
     };
-    let tilt = larger(smaller(tilt, phi), T::zero());
+    // (`φ` is finite for finite inputs, 0 for a standstill: one comparison a bound; a NaN
+    // tilt, 0/0 for a standstill under the normal–tangential law, takes the bound.)
+    let tilt = at_least(at_most(tilt, phi), T::zero());
     let (s, c) = crate::geometry::sin_cos_small(tilt);
     let u = vt * c - vn * s;
-    let vn = larger(vt * s + vn * c, T::zero());
+    let vn = at_least(vt * s + vn * c, T::zero());
     let e = restitution(vn, turf.restitution);
     let r = radius_m;
     let slip = u + r * w;

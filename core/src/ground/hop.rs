@@ -8,7 +8,7 @@ use super::normal::Normal;
 use crate::aero::{Dynamics, ForceEvaluation, ForceField, S, State};
 use crate::error::{Error, Result};
 use crate::integrator::{Method, events, integrate_to_event};
-use crate::real::{Real, all_finite, larger, lit, smaller};
+use crate::real::{Real, all_finite, at_least, at_most, lit, smaller};
 use crate::trajectory::{Contact, Plane, Recorder, Stats};
 use nalgebra::Vector3;
 
@@ -155,7 +155,7 @@ pub(crate) fn low_hop<T: Real, H: Hopper<T>, N: Normal<T>>(
     let sixth = lit::<T>(1.0 / 6.0);
     // The spin magnitude, its rate linear in time (never below zero).
     let spin_at = |tau: T, rate0: T, jerk: T| {
-        larger(spin0 + rate0 * tau + jerk * tau * tau * half, T::zero())
+        at_least(spin0 + rate0 * tau + jerk * tau * tau * half, T::zero())
     };
     // (`(j/2)·τ²` is `j·(τ²/2)` bit for bit, halving being exact: the half of `j` is
     // ready before `τ`, one multiply fewer after it.)
@@ -398,11 +398,11 @@ impl<'s, T: Real> Hops<'s, T> {
             let g_n = field.gravity * plane.normal.y;
             let guess = lit::<T>(HOP_STEP_FACTOR) * v.dot(&plane.normal) / g_n;
             if guess > T::zero() && guess.is_finite() {
-                cfg.initial_step = smaller(smaller(guess, lit(HOP_MAX_FIRST_STEP_S)), cfg.max_step);
+                cfg.initial_step = smaller(at_most(guess, lit(HOP_MAX_FIRST_STEP_S)), cfg.max_step);
             }
             let factor = lit::<T>(HOP_TOLERANCE_FACTOR);
-            cfg.rtol = smaller(cfg.rtol * factor, lit(HOP_MAX_TOLERANCE));
-            cfg.atol = smaller(cfg.atol * factor, lit(HOP_MAX_TOLERANCE));
+            cfg.rtol = at_most(cfg.rtol * factor, lit(HOP_MAX_TOLERANCE));
+            cfg.atol = at_most(cfg.atol * factor, lit(HOP_MAX_TOLERANCE));
         }
         Ok(HopStart {
             y0: [p.x, p.y, p.z, v.x, v.y, v.z, spin],

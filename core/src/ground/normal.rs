@@ -12,7 +12,7 @@
 //! (the on-target suite compares a board that flies the general form, the micro:bit's, with
 //! the host's level one).
 
-use crate::real::{Real, larger};
+use crate::real::{Real, at_least};
 use nalgebra::Vector3;
 
 /// A unit normal of the ground plane.
@@ -65,7 +65,7 @@ impl<T: Real> Normal<T> for Vector3<T> {
 
     #[inline(always)]
     fn tangential_sq(self, v: &Vector3<T>) -> T {
-        let away = larger(Vector3::dot(&self, v), T::zero());
+        let away = at_least(Vector3::dot(&self, v), T::zero());
         Normal::in_plane(self, v).norm_squared() + away * away
     }
 
@@ -112,7 +112,7 @@ impl<T: Real> Normal<T> for Level {
     /// `v_n = 0`): not waiting on `|v|²`.
     #[inline(always)]
     fn tangential_sq(self, v: &Vector3<T>) -> T {
-        let away = larger(v.y, T::zero());
+        let away = at_least(v.y, T::zero());
         v.x * v.x + v.z * v.z + away * away
     }
 

@@ -28,7 +28,7 @@
 //! rolls on until [`ROLL_TIME_CAP_S`].
 
 use super::normal::Normal;
-use crate::real::{Real, larger, length, lit, smaller, to_f64};
+use crate::real::{Real, at_least, at_most, length, lit, to_f64};
 use crate::trajectory::{Recorder, Sample};
 use nalgebra::Vector3;
 
@@ -179,7 +179,7 @@ impl<T: Real, N: Normal<T>> Roll<'_, '_, T, N> {
             // `s' = max(s − A dt, 0)/(1 + B s dt)`, as the factor `s'/s` in one division.
             let speed_sq = n.norm_sq_in_plane(&v1);
             let speed = speed_sq.root();
-            let scale = larger(speed - resist * dt, T::zero()) / (speed + drag * dt * speed_sq);
+            let scale = at_least(speed - resist * dt, T::zero()) / (speed + drag * dt * speed_sq);
             let (v1, v1_in_plane) = if speed > T::zero() {
                 (v1 * scale, in_plane(v1) * scale)
             } else {
@@ -236,7 +236,7 @@ impl<T: Real, N: Normal<T>> Roll<'_, '_, T, N> {
         // a(v) = A + B v² along −v̂: A = (5/7)ρ₀g_n, B = A·c.
         let resist = five_sevenths * self.resistance * g_n;
         let drag = resist * self.grass_drag;
-        let cap = larger(cap, T::zero());
+        let cap = at_least(cap, T::zero());
         if g_t.norm_squared() == T::zero() {
             return self.level(p0, v0, resist, cap);
         }
@@ -259,7 +259,7 @@ impl<T: Real, N: Normal<T>> Roll<'_, '_, T, N> {
             if holds && s <= resist * h {
                 // Stops within this step, where the pull cannot start it again.
                 let ts = if resist > T::zero() {
-                    smaller(s / resist, h)
+                    at_most(s / resist, h)
                 } else {
                     h
                 };
@@ -272,7 +272,7 @@ impl<T: Real, N: Normal<T>> Roll<'_, '_, T, N> {
                     still_rolling: false,
                 };
             }
-            let s1 = larger(s - resist * h, T::zero()) / (T::one() + drag * s * h);
+            let s1 = at_least(s - resist * h, T::zero()) / (T::one() + drag * s * h);
             let vb = if s > T::zero() { va * (s1 / s) } else { va };
             let p1 = p + (va + vb) * half_h;
             let v1 = vb + pull * half_h;
@@ -351,7 +351,7 @@ impl<T: Real, N: Normal<T>> Roll<'_, '_, T, N> {
             let half = (k * tau * lit(0.5)).sin();
             let x = (w * (k * tau).sin() - half * half * lit(2.0)).ln_1p() * per_b;
             let x = if x.is_finite() {
-                larger(x, T::zero())
+                at_least(x, T::zero())
             } else {
                 full
             };
@@ -360,7 +360,7 @@ impl<T: Real, N: Normal<T>> Roll<'_, '_, T, N> {
             } else {
                 T::zero()
             };
-            (x, larger(speed, T::zero()))
+            (x, at_least(speed, T::zero()))
         };
         let (end, still_rolling) = if stop <= cap {
             (stop, false)
