@@ -9,9 +9,9 @@
 //!    friction that may reverse the spin (a wedge checks or spins back).
 //! 2. **Hop**: between bounces the ball flies with the scene's own aerodynamics and wind
 //!    (the flight's integrator and force model) until it comes back down through the plane.
-//! 3. **Roll** ([`roll`]): once a rebound would rise less than [`STOP_HEIGHT_M`] (the
-//!    grass canopy's height; Penner's criterion at his 5 mm before issue 37) the ball
-//!    rolls against the surface's rolling resistance, in closed form on level ground.
+//! 3. **Roll** ([`roll`]): once a rebound would rise less than [`STOP_HEIGHT_M`] (Penner's
+//!    criterion) the ball rolls against the surface's rolling resistance, in closed form on
+//!    level ground.
 //!
 //! Nothing of this runs, or costs anything, when the scene has no ground.
 
@@ -36,13 +36,10 @@ use normal::Level;
 use normal::Normal;
 pub use surface::{CraterLaw, Surface, Turf};
 
-/// A rebound rising less than this (m) ends the bouncing: the ball skids, then rolls.
-/// 20 mm, the grass canopy of a fairway (cut at 8–19 mm, 1/2–3/4 inch): a hop that does
-/// not clear the blades is in contact with the turf throughout, which is what the roll's
-/// grass drag models (docs/ground.md, *Bounce to roll*). One value for every turf. The
-/// seed took Penner's (2002) 5 mm, under which the last few millimetre hops flew free of
-/// any grass resistance (issue 37: they also cost ≈ 600 M4F instructions each).
-pub const STOP_HEIGHT_M: f64 = 0.02;
+/// A rebound lower than this (m) ends the bouncing: the ball rolls (Penner 2002: 5 mm).
+/// A 20 mm stop (a fairway's grass canopy) was tested for its M4F cost and not adopted
+/// (docs/ground.md, *Bounce to roll at the grass canopy*).
+pub const STOP_HEIGHT_M: f64 = 0.005;
 /// At most this many hops; the ball then rolls (a bound on the run time, never reached by
 /// a golf shot: they stop within about ten).
 pub const MAX_BOUNCES: u32 = 64;
