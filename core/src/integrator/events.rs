@@ -295,9 +295,7 @@ impl<'r, 'b, T: Real> Tracker<'r, 'b, T> {
         }
         // Most steps hold neither the apex nor the landing: `locate` would find nothing
         // (the same tests as its own), so it is not called.
-        let (y0, y1) = (step.y0, step.y1);
-        let may_hold_apex = y0[VY] > T::zero() && y1[VY] <= T::zero();
-        if !(may_hold_apex || y1[Y] <= self.landing_height) {
+        if !self.may_hold_event(step) {
             if self.recorder.is_some() {
                 self.record(t0, step, None);
             }
@@ -325,11 +323,16 @@ impl<'r, 'b, T: Real> Tracker<'r, 'b, T> {
     /// no call (a call there spills the loop's live SSE registers, all caller-saved).
     #[inline(always)]
     pub(crate) fn quiet(&self, step: &Step<'_, T>) -> bool {
+        self.plane.is_none() && self.recorder.is_none() && !self.may_hold_event(step)
+    }
+
+    /// Whether a flight's step may hold the apex (the climb ends in it) or the landing
+    /// (it ends at or below the landing height): `locate`'s own first tests.
+    #[inline(always)]
+    fn may_hold_event(&self, step: &Step<'_, T>) -> bool {
         let (y0, y1) = (step.y0, step.y1);
-        self.plane.is_none()
-            && self.recorder.is_none()
-            && !(y0[VY] > T::zero() && y1[VY] <= T::zero())
-            && !(y1[Y] <= self.landing_height)
+        let may_hold_apex = y0[VY] > T::zero() && y1[VY] <= T::zero();
+        may_hold_apex || y1[Y] <= self.landing_height
     }
 
     /// Whether the step ends below the landing height (a hop's: its plane), so that the

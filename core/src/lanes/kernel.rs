@@ -432,32 +432,26 @@ pub(crate) fn step<P: Pack>(
     for ((ri, ei), wi) in r.iter_mut().zip(e.iter()).zip(weight.iter()) {
         *ri = ei.abs() * *wi;
     }
-    let mut err = zero;
-    if P::FUSED {
-        // The fused packs: the largest `rᵢ ≥ 0` by a tree (3 compares and blends deep
-        // rather than 7), the scalar fold's value where no `rᵢ` is NaN (a NaN sum says
-        // one is; the fold below then gives the scalar rule's result).
+    // The fused packs: the largest `rᵢ ≥ 0` by a tree (3 compares and blends deep rather
+    // than 7), the scalar fold's value where no `rᵢ` is NaN (a NaN sum says one is; the
+    // fold below then gives the scalar rule's result).
+    let no_nan = || {
         let sum = ((r[0] + r[1]) + (r[2] + r[3])) + ((r[4] + r[5]) + r[6]);
-        if sum.ne(sum).bits() == 0 {
-            err = larger_of(
-                larger_of(larger_of(r[0], r[1]), larger_of(r[2], r[3])),
-                larger_of(larger_of(r[4], r[5]), r[6]),
-            );
-            return Stages {
-                k3,
-                k4,
-                k5,
-                k6,
-                k7,
-                y1,
-                err,
-            };
+        sum.ne(sum).bits() == 0
+    };
+    let err = if P::FUSED && no_nan() {
+        larger_of(
+            larger_of(larger_of(r[0], r[1]), larger_of(r[2], r[3])),
+            larger_of(larger_of(r[4], r[5]), r[6]),
+        )
+    } else {
+        let mut err = zero;
+        for ri in r {
+            // `!(r <= err)` also propagates NaN into a rejection (the scalar rule).
+            err = (!ri.le(err)).blend(ri, err);
         }
-    }
-    for ri in r {
-        // `!(r <= err)` also propagates NaN into a rejection (the scalar rule).
-        err = (!ri.le(err)).blend(ri, err);
-    }
+        err
+    };
     Stages {
         k3,
         k4,
