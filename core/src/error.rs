@@ -133,6 +133,8 @@ pub enum Field {
     CraterFade,
     /// Growth of the surface's rolling resistance with speed, the grass drag (s²/m²).
     GrassDrag,
+    /// Height of the surface's grass, the canopy a rebound must clear to hop (m).
+    GrassHeight,
     /// Green speed, stimpmeter reading (m).
     Stimp,
     /// Ground plane normal (slope).
@@ -382,6 +384,7 @@ impl Field {
             Self::CraterScale => "crater scale",
             Self::CraterFade => "crater fade speed",
             Self::GrassDrag => "grass drag",
+            Self::GrassHeight => "grass height",
             Self::Stimp => "stimp",
             Self::GroundNormal => "ground slope",
             Self::Step => "step size",

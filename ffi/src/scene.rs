@@ -125,6 +125,7 @@ impl<T: Real> Default for CarryScene<T> {
             crater_fade_mps: T::one(),
             grass_drag_s2pm2: T::zero(),
             crater_law: carry_core::ground::CraterLaw::Penner,
+            grass_height_m: T::zero(),
         });
         let stimp = match Surface::<T>::green() {
             Surface::Green { stimp_m } => stimp_m,
@@ -224,8 +225,8 @@ impl<T: Real> CarryScene<T> {
             CARRY_GROUND_GREEN => Surface::Green {
                 stimp_m: self.stimp_m,
             },
-            // The crater fade and the grass drag are the firm fairway's (not in the C
-            // struct).
+            // The crater fade, the grass drag and the grass height are the firm
+            // fairway's (not in the C struct).
             CARRY_GROUND_CUSTOM => Surface::Custom(Turf {
                 restitution: self.ground_restitution,
                 friction: self.ground_friction,

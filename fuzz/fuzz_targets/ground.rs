@@ -58,6 +58,8 @@ fn surface<T: Real>(b: &mut Bytes<'_>) -> Surface<T> {
             } else {
                 CraterLaw::NormalTangential
             },
+            // (Fixed: a byte more here would shift the committed corpus's decoding.)
+            grass_height_m: lit(carry_core::ground::surface::FAIRWAY_GRASS_HEIGHT_M),
         }),
     }
 }

@@ -246,7 +246,7 @@ pub struct SceneArgs {
     /// TrackMan's roll on single drives), fairway-joint (fitted to TrackMan's single
     /// drives and its 2010 chart at once), fairway-soft, rough, green, or a
     /// ground file FILE.toml (keys surface, stimp, restitution, friction,
-    /// rolling_resistance, crater_scale, slope, slope_direction). Adds total, roll,
+    /// rolling_resistance, crater_scale, grass_height, slope, slope_direction). Adds total, roll,
     /// bounces, rest position and time to rest.
     #[arg(long, value_name = "SURFACE")]
     pub ground: Option<String>,
@@ -272,6 +272,10 @@ pub struct SceneArgs {
     /// Custom turf: scale of Penner's crater tilt (1 = Penner's green).
     #[arg(long, value_name = "K", value_parser = finite, allow_hyphen_values = true)]
     pub crater_scale: Option<f64>,
+    /// Custom turf: grass height [m]; a rebound lower than it ends the bouncing (green
+    /// 0.005, fairways 0.0127, rough 0.0381).
+    #[arg(long, value_name = "M", value_parser = finite, allow_hyphen_values = true)]
+    pub grass_height: Option<f64>,
 }
 
 /// Precision option.
@@ -456,6 +460,7 @@ impl SceneArgs {
         put(p, u, Key::GroundFriction, self.ground_friction);
         put(p, u, Key::RollingResistance, self.rolling_resistance);
         put(p, u, Key::CraterScale, self.crater_scale);
+        put(p, u, Key::GrassHeight, self.grass_height);
         for (flag, key) in [
             (self.no_drag, Key::NoDrag),
             (self.no_lift, Key::NoLift),

@@ -74,6 +74,41 @@ fn scene_and_ground_files() {
     // Uphill and a slower turf roll less than the firm fairway.
     let f = json(&["flight", "--json", "--ground", "fairway"]);
     assert!(e["flight"]["roll_m"].as_f64() < f["flight"]["roll_m"].as_f64());
+    // The grass height (issue 37): the fairway's own 12.7 mm given as an option or a
+    // ground file's key is the preset, bit for bit; Penner's 5 mm bounces on, one hop more
+    // on this shot.
+    let own = json(&[
+        "flight",
+        "--json",
+        "--ground",
+        "fairway",
+        "--grass-height",
+        "0.0127",
+    ]);
+    assert_eq!(own["flight"]["total_m"], f["flight"]["total_m"]);
+    let grass = temp_file(
+        "grass.toml",
+        "surface = \"fairway\"\ngrass_height = 0.005\n",
+    );
+    let g = json(&[
+        "flight",
+        "--json",
+        "--ground",
+        grass.to_str().expect("utf8"),
+    ]);
+    let h = json(&[
+        "flight",
+        "--json",
+        "--ground",
+        "fairway",
+        "--grass-height",
+        "0.005",
+    ]);
+    assert_eq!(g["flight"]["total_m"], h["flight"]["total_m"]);
+    assert!(
+        g["flight"]["bounces"].as_u64() > f["flight"]["bounces"].as_u64(),
+        "{g} {f}"
+    );
 }
 
 #[test]
@@ -157,6 +192,14 @@ fn bad_ground_input_is_one_line_and_status_2() {
         (
             vec!["--ground", "fairway", "--ground-slope", "50"],
             "--ground-slope: is out of range",
+        ),
+        (
+            vec!["--ground", "fairway", "--grass-height", "-0.01"],
+            "--grass-height: must not be negative (0 to 0.2 m)",
+        ),
+        (
+            vec!["--ground", "fairway", "--grass-height", "0.5"],
+            "--grass-height: is out of range (0 to 0.2 m)",
         ),
         (
             vec!["--ground", missing.to_str().expect("utf8")],

@@ -114,6 +114,7 @@ pub fn field_key(field: Field) -> &'static str {
         Field::CraterScale => "crater_scale",
         Field::CraterFade => "crater_fade",
         Field::GrassDrag => "grass_drag",
+        Field::GrassHeight => "grass_height",
         Field::Stimp => "stimp",
         Field::GroundNormal => "ground_slope",
         Field::ContactLaw => "contact, solver",
@@ -204,6 +205,10 @@ impl From<Error> for InputError {
                     | Field::GrassDrag => {
                         format!("{reason} (0 to {MAX_TURF_COEFFICIENT})")
                     }
+                    Field::GrassHeight => format!(
+                        "{reason} (0 to {} m)",
+                        carry_core::ground::surface::MAX_GRASS_HEIGHT_M
+                    ),
                     Field::ContactLaw => {
                         "the full 15×15 solver supports only --contact rolling".to_owned()
                     }

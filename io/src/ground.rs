@@ -4,14 +4,14 @@
 //! Surfaces: `fairway` (firm), `fairway-trackman` (TrackMan's single drives),
 //! `fairway-joint` (TrackMan's single drives and 2010 chart at once), `fairway-soft`,
 //! `rough`, `green` (with `--stimp`, feet — the stimpmeter's own unit — default 10). Any
-//! of `--ground-restitution`, `--ground-friction`, `--rolling-resistance`, `--crater-scale`
-//! overrides the surface's value (a custom turf). `--ground-slope DEG` tilts the ground plane through the landing
+//! of `--ground-restitution`, `--ground-friction`, `--rolling-resistance`, `--crater-scale`,
+//! `--grass-height` (m) overrides the surface's value (a custom turf). `--ground-slope DEG` tilts the ground plane through the landing
 //! point, rising towards `--ground-slope-direction DEG` (from downrange towards the right,
 //! like the wind: 0 = uphill to the target, 180 = downhill, 90 = rising to the right).
 //!
 //! A ground file (TOML), and a `[ground]` table or `ground = "green"` in a scene file, take
 //! the keys `surface`, `stimp`, `restitution`, `friction`, `rolling_resistance`,
-//! `crater_scale`, `slope`, `slope_direction`.
+//! `crater_scale`, `grass_height`, `slope`, `slope_direction`.
 
 use crate::error::InputError;
 use carry_core::real::lit;
@@ -73,6 +73,8 @@ pub struct GroundSpec {
     pub rolling_resistance: Option<f64>,
     /// Crater scale.
     pub crater_scale: Option<f64>,
+    /// Grass height (m): a rebound that does not rise clear of it ends the bouncing.
+    pub grass_height_m: Option<f64>,
     /// Slope (deg).
     pub slope_deg: Option<f64>,
     /// Direction the ground rises towards (deg).
@@ -98,6 +100,7 @@ impl GroundSpec {
             friction,
             rolling_resistance,
             crater_scale,
+            grass_height_m,
             slope_deg,
             slope_direction_deg
         );
@@ -135,7 +138,7 @@ pub fn parse(text: &str) -> Result<GroundSpec, String> {
 }
 
 /// The keys of a ground table.
-const TABLE_KEYS: &str = "surface, stimp, restitution, friction, rolling_resistance, crater_scale, slope, slope_direction";
+const TABLE_KEYS: &str = "surface, stimp, restitution, friction, rolling_resistance, crater_scale, grass_height, slope, slope_direction";
 
 /// A ground table (a ground file, or `[ground]` in a scene file).
 ///
@@ -170,6 +173,7 @@ pub fn from_table(table: &toml::Table) -> Result<GroundSpec, String> {
             "friction" => g.friction = Some(number()?),
             "rolling_resistance" => g.rolling_resistance = Some(number()?),
             "crater_scale" => g.crater_scale = Some(number()?),
+            "grass_height" => g.grass_height_m = Some(number()?),
             "slope" => g.slope_deg = Some(number()?),
             "slope_direction" => g.slope_direction_deg = Some(number()?),
             other => return Err(format!("unknown key '{other}' (keys: {TABLE_KEYS})")),
@@ -210,6 +214,7 @@ pub fn build<T: Real>(spec: &GroundSpec) -> Result<Option<Ground<T>>, InputError
         spec.friction,
         spec.rolling_resistance,
         spec.crater_scale,
+        spec.grass_height_m,
     ];
     let surface = if overrides.iter().any(Option::is_some) {
         let base = surface.turf().map_err(InputError::from)?;
@@ -219,6 +224,7 @@ pub fn build<T: Real>(spec: &GroundSpec) -> Result<Option<Ground<T>>, InputError
             friction: pick(spec.friction, base.friction),
             rolling_resistance: pick(spec.rolling_resistance, base.rolling_resistance),
             crater_scale: pick(spec.crater_scale, base.crater_scale),
+            grass_height_m: pick(spec.grass_height_m, base.grass_height_m),
             ..base
         })
     } else {

@@ -333,6 +333,7 @@ keys! {
     GroundFriction = "ground_friction", Number, Plain;
     RollingResistance = "rolling_resistance", Number, Plain;
     CraterScale = "crater_scale", Number, Plain;
+    GrassHeight = "grass_height", Number, Plain;
 }
 
 /// A parsed value.
@@ -373,6 +374,7 @@ impl Key {
                 | Self::GroundFriction
                 | Self::RollingResistance
                 | Self::CraterScale
+                | Self::GrassHeight
         )
     }
 
@@ -474,6 +476,7 @@ impl Key {
                     Key::GroundFriction => s.ground.friction = Some(x),
                     Key::RollingResistance => s.ground.rolling_resistance = Some(x),
                     Key::CraterScale => s.ground.crater_scale = Some(x),
+                    Key::GrassHeight => s.ground.grass_height_m = Some(x),
                     _ => {}
                 }
             }

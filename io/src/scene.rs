@@ -54,6 +54,7 @@ pub const SCENE_KEYS: &[Key] = &[
     Key::GroundFriction,
     Key::RollingResistance,
     Key::CraterScale,
+    Key::GrassHeight,
 ];
 
 fn v3<T: Real>(v: [f64; 3]) -> Vector3<T> {

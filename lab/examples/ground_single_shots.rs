@@ -31,6 +31,8 @@ const SEED_FAIRWAY: Turf<f64> = Turf {
     crater_fade_mps: CRATER_FADE_NORMAL_SPEED_MPS,
     grass_drag_s2pm2: GRASS_DRAG_S2PM2,
     crater_law: CraterLaw::Penner,
+    // (The seed's and the first pass's stop: Penner's 5 mm on every turf.)
+    grass_height_m: carry_core::ground::STOP_HEIGHT_M,
 };
 
 /// `fairway-trackman` as the first pass of issue 35 left it: Penner's crater law, fitted to
@@ -43,12 +45,14 @@ const FIRST_PASS_TRACKMAN: Turf<f64> = Turf {
     crater_fade_mps: 2.13,
     grass_drag_s2pm2: 0.657,
     crater_law: CraterLaw::Penner,
+    grass_height_m: carry_core::ground::STOP_HEIGHT_M,
 };
 
 /// The fit's start: the seed's firm fairway with the crater of the impact's normal and
 /// tangential speeds.
 const START: Turf<f64> = Turf {
     crater_law: CraterLaw::NormalTangential,
+    grass_height_m: carry_core::ground::surface::FAIRWAY_GRASS_HEIGHT_M,
     ..FIRST_PASS_TRACKMAN
 };
 

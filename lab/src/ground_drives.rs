@@ -321,6 +321,7 @@ pub fn turf_of(p: &[f64; PARAMETERS], law: CraterLaw) -> Turf<f64> {
         crater_fade_mps: p[4],
         grass_drag_s2pm2: p[5],
         crater_law: law,
+        grass_height_m: carry_core::ground::surface::FAIRWAY_GRASS_HEIGHT_M,
     }
 }
 

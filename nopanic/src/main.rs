@@ -277,6 +277,7 @@ fn ground<T: Real>() -> Option<Ground<T>> {
             } else {
                 CraterLaw::NormalTangential
             },
+            grass_height_m: x(0.0127),
         }),
     };
     match black_box(1_u8) {

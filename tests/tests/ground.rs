@@ -167,6 +167,7 @@ fn absurd_surfaces_are_named_errors() {
         crater_fade_mps: carry_core::ground::bounce::CRATER_FADE_NORMAL_SPEED_MPS,
         grass_drag_s2pm2: carry_core::ground::surface::GRASS_DRAG_S2PM2,
         crater_law: carry_core::ground::CraterLaw::Penner,
+        grass_height_m: carry_core::ground::STOP_HEIGHT_M,
     };
     for (t, field) in [
         (turf(1.01, 0.4, 0.1), carry_core::Field::GroundRestitution),
@@ -174,6 +175,27 @@ fn absurd_surfaces_are_named_errors() {
         (
             turf(0.5, 0.4, f64::NAN),
             carry_core::Field::RollingResistance,
+        ),
+        (
+            Turf {
+                grass_height_m: -1e-3,
+                ..turf(0.5, 0.4, 0.1)
+            },
+            carry_core::Field::GrassHeight,
+        ),
+        (
+            Turf {
+                grass_height_m: 0.3,
+                ..turf(0.5, 0.4, 0.1)
+            },
+            carry_core::Field::GrassHeight,
+        ),
+        (
+            Turf {
+                grass_height_m: f64::INFINITY,
+                ..turf(0.5, 0.4, 0.1)
+            },
+            carry_core::Field::GrassHeight,
         ),
     ] {
         let scene = Scene {
@@ -191,6 +213,57 @@ fn absurd_surfaces_are_named_errors() {
             matches!(err, Err(Error::InvalidInput { field: f, .. }) if f == field),
             "{err:?}"
         );
+    }
+}
+
+/// The grass height (issue 37) only decides where the bouncing ends: the bounces up to
+/// there are the same, so a taller grass never adds a bounce, and a rebound that stops
+/// in it leaves the ball to skid and roll. The presets: Penner's 5 mm on a green, the
+/// 1/2-inch cut on every fairway, 1.5 inches in the rough.
+#[test]
+fn taller_grass_never_adds_a_bounce() {
+    use carry_core::ground::surface::{
+        FAIRWAY_GRASS_HEIGHT_M, GREEN_GRASS_HEIGHT_M, ROUGH_GRASS_HEIGHT_M,
+    };
+    let grass = |s: Surface<f64>| s.turf().expect("turf").grass_height_m;
+    assert_eq!(grass(Surface::green()), GREEN_GRASS_HEIGHT_M);
+    assert_eq!(grass(Surface::green()), carry_core::ground::STOP_HEIGHT_M);
+    for s in [
+        Surface::FairwayFirm,
+        Surface::FairwaySoft,
+        Surface::FairwayTrackman,
+        Surface::FairwayJoint,
+    ] {
+        assert_eq!(grass(s), FAIRWAY_GRASS_HEIGHT_M);
+    }
+    assert_eq!(grass(Surface::Rough), ROUGH_GRASS_HEIGHT_M);
+    for m in [
+        tour_driver::<f64>(),
+        tour_pw(),
+        launch(147.4, 8.7, 0.0, 2258.0, 0.0),
+        launch(70.0, 3.0, 0.0, -500.0, 0.0),
+    ] {
+        for base in [
+            Surface::FairwayFirm,
+            Surface::FairwayTrackman,
+            Surface::Rough,
+        ] {
+            let mut last: Option<u32> = None;
+            for h in [0.0, 0.002, 0.005, 0.0127, 0.03, 0.1, 0.2] {
+                let turf = Turf {
+                    grass_height_m: h,
+                    ..base.turf().expect("turf")
+                };
+                let g = go(&m, Some(Ground::level(Surface::Custom(turf))))
+                    .ground
+                    .expect("rollout");
+                assert!(g.total_m.is_finite() && g.end == RunEnd::Rest, "{h}: {g:?}");
+                if let Some(b) = last {
+                    assert!(g.bounces <= b, "{base:?} {h}: {} > {b}", g.bounces);
+                }
+                last = Some(g.bounces);
+            }
+        }
     }
 }
 
@@ -317,6 +390,7 @@ fn surfaces() -> impl Strategy<Value = Surface<f64>> {
                 crater_fade_mps: carry_core::ground::bounce::CRATER_FADE_NORMAL_SPEED_MPS,
                 grass_drag_s2pm2: carry_core::ground::surface::GRASS_DRAG_S2PM2,
                 crater_law: carry_core::ground::CraterLaw::Penner,
+                grass_height_m: carry_core::ground::STOP_HEIGHT_M,
             })
         }),
     ]

@@ -21,7 +21,7 @@ struct Case {
     sidespin_radps: f64,
     surface: u8,
     stimp_m: f64,
-    turf: [f64; 4],
+    turf: [f64; 5],
     slope_rad: f64,
     slope_direction_rad: f64,
     wind: u8,
@@ -42,7 +42,11 @@ fn cases() -> impl Strategy<Value = Case> {
             -300.0..1300.0,
             -400.0..400.0,
         ),
-        (0u8..8, 0.31..9.0, [0.0..1.0, 0.0..2.0, 0.0..1.0, 0.0..3.0]),
+        (
+            0u8..8,
+            0.31..9.0,
+            [0.0..1.0, 0.0..2.0, 0.0..1.0, 0.0..3.0, 0.0..0.05],
+        ),
         (
             0.0..1.0,
             -3.2..3.2,
@@ -99,6 +103,7 @@ fn surface<T: Real>(c: &Case) -> Surface<T> {
             } else {
                 carry_core::ground::CraterLaw::Penner
             },
+            grass_height_m: lit(c.turf[4]),
         }),
     }
 }

@@ -130,6 +130,7 @@ fn issue_21_frictionless_skid_stays_finite() {
         crater_fade_mps: carry_core::ground::bounce::CRATER_FADE_NORMAL_SPEED_MPS,
         grass_drag_s2pm2: carry_core::ground::surface::GRASS_DRAG_S2PM2,
         crater_law: carry_core::ground::CraterLaw::Penner,
+        grass_height_m: carry_core::ground::STOP_HEIGHT_M,
     };
     let scene = Scene::<f64> {
         landing_height_m: -8.4e-308,

@@ -9,9 +9,9 @@
 //!    friction that may reverse the spin (a wedge checks or spins back).
 //! 2. **Hop**: between bounces the ball flies with the scene's own aerodynamics and wind
 //!    (the flight's integrator and force model) until it comes back down through the plane.
-//! 3. **Roll** ([`roll`]): once a rebound would rise less than [`STOP_HEIGHT_M`] (Penner's
-//!    criterion) the ball rolls against the surface's rolling resistance, in closed form on
-//!    level ground.
+//! 3. **Roll** ([`roll`]): once a rebound would not rise clear of the turf's grass
+//!    ([`Turf::grass_height_m`]; Penner's criterion, 5 mm on his greens) the ball skids and
+//!    rolls against the surface's rolling resistance, in closed form on level ground.
 //!
 //! Nothing of this runs, or costs anything, when the scene has no ground.
 
@@ -36,10 +36,11 @@ use normal::Level;
 use normal::Normal;
 pub use surface::{CraterLaw, Surface, Turf};
 
-/// A rebound lower than this (m) ends the bouncing: the ball rolls (Penner 2002: 5 mm).
-/// A 20 mm stop (a fairway's grass canopy) was tested for its M4F cost and not adopted
-/// (docs/ground.md, *Bounce to roll at the grass canopy*).
-pub const STOP_HEIGHT_M: f64 = 0.005;
+/// Penner's (2002) stop: on his greens a rebound lower than this (m) ends the bouncing.
+/// Each turf now stops at its own grass height ([`Turf::grass_height_m`]: this on a
+/// green, [`surface::FAIRWAY_GRASS_HEIGHT_M`] on a fairway; docs/ground.md, *Bounce to
+/// roll at the grass canopy*).
+pub const STOP_HEIGHT_M: f64 = surface::GREEN_GRASS_HEIGHT_M;
 /// At most this many hops; the ball then rolls (a bound on the run time, never reached by
 /// a golf shot: they stop within about ten).
 pub const MAX_BOUNCES: u32 = 64;
@@ -254,8 +255,9 @@ fn run_out_on<T: Real, H: Hopper<T>, N: Normal<T>>(
     };
     let g_vec = Vector3::new(T::zero(), -gravity, T::zero());
     let g_n = gravity * n.vector().y;
-    // A rebound rises v²/(2 g_n) above the plane: it hops if v² ≥ 2 g_n h_stop.
-    let hop_speed_sq = lit::<T>(2.0 * STOP_HEIGHT_M) * g_n;
+    // A rebound rises v²/(2 g_n) above the plane: it hops if it clears the grass,
+    // v² ≥ 2 g_n h_grass.
+    let hop_speed_sq = lit::<T>(2.0) * ground.turf.grass_height_m * g_n;
     let low_hop_speed_sq = lit::<T>(2.0 * LOW_HOP_HEIGHT_M) * g_n;
     // A low hop is gravity's: the air may hold up at most three quarters of its normal pull
     // (else the hop lasts over four times its vacuum time and is integrated).
@@ -415,6 +417,7 @@ mod tests {
                 crater_fade_mps: 6.0,
                 grass_drag_s2pm2: 0.07,
                 crater_law: CraterLaw::Penner,
+                grass_height_m: 0.005,
             }))
             .prepare(0.021_f64)
         };
@@ -467,6 +470,20 @@ mod tests {
             err(Field::GrassDrag, Reason::NotFinite)
         );
         assert_eq!(with(0.5, 0.0), Ok(()));
+        // The grass height (issue 37): named when negative, not finite or over 0.2 m.
+        let grass = |h: f64| {
+            Ground::level(Surface::Custom(Turf {
+                grass_height_m: lit::<T>(h),
+                ..Surface::<T>::FairwayFirm.turf().unwrap()
+            }))
+            .prepare(lit(0.021))
+            .map(|_| ())
+        };
+        assert_eq!(grass(-1e-3), err(Field::GrassHeight, Reason::Negative));
+        assert_eq!(grass(0.21), err(Field::GrassHeight, Reason::OutOfRange));
+        assert_eq!(grass(f64::NAN), err(Field::GrassHeight, Reason::NotFinite));
+        assert_eq!(grass(0.0), Ok(()));
+        assert_eq!(grass(surface::MAX_GRASS_HEIGHT_M), Ok(()));
         for s in [
             Surface::<T>::FairwayFirm,
             Surface::FairwaySoft,
@@ -481,7 +498,7 @@ mod tests {
         assert_eq!(t, t.validated().unwrap());
         assert_eq!(t.crater_fade_mps, lit(surface::TRACKMAN_FAIRWAY[4]));
         // The joint fairway: valid, its own constants, fairway-trackman's turf but for a
-        // shallower crater and an earlier fade (docs/ground.md).
+        // shallower crater and its own fade (docs/ground.md).
         let j = Surface::<T>::FairwayJoint.turf().unwrap();
         assert_eq!(j, j.validated().unwrap());
         assert_eq!(j.crater_law, CraterLaw::NormalTangential);
@@ -492,7 +509,9 @@ mod tests {
             (j.restitution, j.friction, j.rolling_resistance),
             (t.restitution, t.friction, t.rolling_resistance)
         );
-        assert!(j.crater_scale < t.crater_scale && j.crater_fade_mps < t.crater_fade_mps);
+        // (Its fade is its own: 11.9 m/s against fairway-trackman's 11.2 since both were
+        // refitted with the fairway's grass height, issue 37.)
+        assert!(j.crater_scale < t.crater_scale);
     }
 
     #[test]
