@@ -1,6 +1,7 @@
 //! Quick timing of the lanes kernel against the scalar path (medians of repeated runs over
 //! 1,024 launches, one thread): `cargo run --release -p carry-core --example lanes_timing`,
-//! optionally with one path's name (`scalar`, `avx`, `fma` (AVX and FMA), `lanes`, or in `f32`: `scalar32`,
+//! optionally with one path's name (`scalar`, `avx`, `fma` (AVX and FMA), `avx512`,
+//! `avx512fma` (eight lanes a register, exact and fused), `lanes`, or in `f32`: `scalar32`,
 //! `avx32`, `lanes32`) and
 //! a number of passes. The criterion bench (`--bench lanes`) is the reference; this is for
 //! profiling.
@@ -107,6 +108,32 @@ fn main() {
         });
         c
     });
+    // AVX-512 (eight `f64` lanes a register), exact and fused, where the CPU has it.
+    #[allow(unsafe_code)]
+    // SAFETY: `with_avx512_unchecked` requires AVX-512 F and DQ, which were just detected.
+    let avx512 = cpu
+        .filter(|_| is_x86_feature_detected!("avx512f") && is_x86_feature_detected!("avx512dq"))
+        .map(|c| unsafe { c.with_avx512_unchecked() });
+    for (name, cpu) in [
+        ("avx512", avx512),
+        ("avx512fma", avx512.filter(|_| fma.is_some())),
+    ] {
+        let Some(cpu) = cpu else { continue };
+        #[allow(unsafe_code)]
+        // SAFETY: AVX-512 F has the fused multiply–adds.
+        let cpu = if name == "avx512fma" {
+            unsafe { cpu.with_fma_unchecked() }
+        } else {
+            cpu
+        };
+        time(name, &|| {
+            let mut c = 0.0;
+            lanes::fly_each_on(Some(cpu), &shots, &integrator, |_, r| {
+                c += r.map_or(0.0, |o| o.carry_m)
+            });
+            c
+        });
+    }
     time("lanes", &|| {
         let mut c = 0.0;
         lanes::fly_each(&shots, &integrator, |_, r| {

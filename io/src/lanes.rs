@@ -13,7 +13,8 @@ use carry_core::lanes::{self, Avx, LaneReal, Shot};
 use carry_core::{FlightOutcome, Integrator, Result};
 
 /// The AVX token where the CPU running this program has AVX (x86-64), with FMA where it
-/// has FMA too, else `None`.
+/// has FMA too and AVX-512 (eight `f64` lanes a register) where it has AVX-512 F and DQ,
+/// else `None`.
 #[must_use]
 pub fn cpu() -> Option<Avx> {
     #[cfg(target_arch = "x86_64")]
@@ -29,7 +30,8 @@ pub fn cpu() -> Option<Avx> {
 }
 
 /// The AVX token without FMA (the packs whose results are the scalar path's bit for bit)
-/// where the CPU running this program has AVX, else `None`.
+/// where the CPU running this program has AVX, else `None`; with AVX-512 (eight `f64`
+/// lanes a register, bit for bit too) where it has AVX-512 F and DQ.
 #[must_use]
 pub fn cpu_exact() -> Option<Avx> {
     #[cfg(target_arch = "x86_64")]
@@ -37,7 +39,14 @@ pub fn cpu_exact() -> Option<Avx> {
         // SAFETY: `Avx::new_unchecked` requires a CPU (and OS) with AVX, which
         // `is_x86_feature_detected!("avx")` has just confirmed.
         #[allow(unsafe_code)]
-        return Some(unsafe { Avx::new_unchecked() });
+        let avx = unsafe { Avx::new_unchecked() };
+        if std::is_x86_feature_detected!("avx512f") && std::is_x86_feature_detected!("avx512dq") {
+            // SAFETY: `with_avx512_unchecked` requires a CPU (and OS) with AVX-512 F and
+            // DQ, which `is_x86_feature_detected!` has just confirmed.
+            #[allow(unsafe_code)]
+            return Some(unsafe { avx.with_avx512_unchecked() });
+        }
+        return Some(avx);
     }
     None
 }

@@ -46,6 +46,9 @@ pub(super) fn fly_each(
     integrator: &Integrator<f64>,
     sink: &mut dyn FnMut(usize, Result<FlightOutcome<f64>>),
 ) {
+    if cpu.avx512() {
+        return super::avx512::fly_each(cpu, shots, integrator, sink);
+    }
     if cpu.fma() {
         // SAFETY: a token with FMA exists only where its creator checked that the CPU has
         // AVX and FMA (`Avx::new_unchecked`'s and `Avx::with_fma_unchecked`'s contracts),

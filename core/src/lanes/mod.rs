@@ -45,6 +45,8 @@
 
 #[cfg(target_arch = "x86_64")]
 mod avx;
+#[cfg(target_arch = "x86_64")]
+mod avx512;
 #[doc(hidden)]
 pub mod kernel;
 
@@ -142,9 +144,14 @@ impl LaneReal for f32 {
 /// its multiply–adds (one rounding instead of two): faster, and each figure within 1e-9
 /// relative of the scalar path's rather than equal (docs/performance.md, "Lanes kernel";
 /// `f32` stays exact).
+///
+/// With AVX-512 ([`Avx::with_avx512_unchecked`]: AVX-512 F and DQ) the `f64` kernel runs on
+/// 512-bit packs of eight lanes (`f32` stays on eight AVX lanes), fused or exact as the
+/// token's FMA says; the exact ones are the scalar path's bit for bit too.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Avx {
     fma: bool,
+    avx512: bool,
 }
 
 impl Avx {
@@ -156,7 +163,10 @@ impl Avx {
     #[allow(unsafe_code)]
     #[must_use]
     pub const unsafe fn new_unchecked() -> Self {
-        Self { fma: false }
+        Self {
+            fma: false,
+            avx512: false,
+        }
     }
 
     /// The token with FMA: the `f64` kernel fuses its multiply–adds.
@@ -167,19 +177,51 @@ impl Avx {
     #[allow(unsafe_code)]
     #[must_use]
     pub const unsafe fn with_fma_unchecked(self) -> Self {
-        Self { fma: true }
+        Self { fma: true, ..self }
     }
 
-    /// The token without FMA: the packs whose results are the scalar path's bit for bit.
+    /// The token with AVX-512: the `f64` kernel runs on eight lanes a 512-bit register
+    /// (fused with FMA, else bit for bit the scalar path's).
+    ///
+    /// # Safety
+    /// The CPU that runs the program must also have AVX-512 F and DQ (and the OS must save
+    /// their registers): what `std::is_x86_feature_detected!("avx512f")` and `("avx512dq")`
+    /// check.
+    #[allow(unsafe_code)]
+    #[must_use]
+    pub const unsafe fn with_avx512_unchecked(self) -> Self {
+        Self {
+            avx512: true,
+            ..self
+        }
+    }
+
+    /// The token without FMA: the packs whose results are the scalar path's bit for bit
+    /// (eight lanes a register with AVX-512, four without).
     #[must_use]
     pub const fn exact(self) -> Self {
-        Self { fma: false }
+        Self { fma: false, ..self }
+    }
+
+    /// The token without AVX-512: the 256-bit packs (four `f64` lanes).
+    #[must_use]
+    pub const fn avx256(self) -> Self {
+        Self {
+            avx512: false,
+            ..self
+        }
     }
 
     /// Whether the `f64` kernel fuses its multiply–adds with this token.
     #[must_use]
     pub const fn fma(self) -> bool {
         self.fma
+    }
+
+    /// Whether the `f64` kernel runs on AVX-512 packs (eight lanes) with this token.
+    #[must_use]
+    pub const fn avx512(self) -> bool {
+        self.avx512
     }
 }
 
