@@ -119,10 +119,12 @@ fn main() {
         ("avx512fma", avx512.filter(|_| fma.is_some())),
     ] {
         let Some(cpu) = cpu else { continue };
-        #[allow(unsafe_code)]
-        // SAFETY: AVX-512 F has the fused multiply–adds.
         let cpu = if name == "avx512fma" {
-            unsafe { cpu.with_fma_unchecked() }
+            #[allow(unsafe_code)]
+            // SAFETY: FMA was detected (and AVX-512 F has the fused multiply–adds).
+            unsafe {
+                cpu.with_fma_unchecked()
+            }
         } else {
             cpu
         };

@@ -60,3 +60,33 @@ pub fn fly_each<T: LaneReal>(
 ) {
     lanes::fly_each_on(cpu(), shots, integrator, sink);
 }
+
+#[cfg(test)]
+mod tests {
+    use super::{cpu, cpu_exact};
+
+    /// The tokens say what the CPU has: AVX-512 exactly where it has AVX-512 F and DQ (the
+    /// packs `cpu()` then prefers), FMA in `cpu()` only, `cpu_exact()` the same token without
+    /// FMA.
+    #[test]
+    fn tokens_follow_the_cpu() {
+        assert_eq!(cpu_exact(), cpu().map(|c| c.exact()));
+        assert!(cpu_exact().is_none_or(|c| !c.fma()));
+        #[cfg(target_arch = "x86_64")]
+        {
+            let avx = std::is_x86_feature_detected!("avx");
+            let avx512 = avx
+                && std::is_x86_feature_detected!("avx512f")
+                && std::is_x86_feature_detected!("avx512dq");
+            assert_eq!(cpu().is_some(), avx);
+            assert_eq!(cpu().is_some_and(|c| c.avx512()), avx512);
+            assert_eq!(
+                cpu().is_some_and(|c| c.fma()),
+                avx && std::is_x86_feature_detected!("fma")
+            );
+            if !avx512 {
+                println!("note: no AVX-512 on this CPU; the 8-lane f64 packs are not used");
+            }
+        }
+    }
+}

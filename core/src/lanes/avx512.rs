@@ -41,12 +41,13 @@ pub(super) fn fly_each(
     integrator: &Integrator<f64>,
     sink: &mut dyn FnMut(usize, Result<FlightOutcome<f64>>),
 ) {
-    // SAFETY (both): a token with AVX-512 exists only where its creator checked that the
-    // CPU has AVX-512 F and DQ (`Avx::with_avx512_unchecked`'s contract), which is what
-    // `fly` requires; AVX-512 F has the fused multiply–adds `F64x8<true>` uses.
     if cpu.fma() {
+        // SAFETY: a token with AVX-512 exists only where its creator checked that the CPU
+        // has AVX-512 F and DQ (`Avx::with_avx512_unchecked`'s contract), which is what
+        // `fly` requires; AVX-512 F has the fused multiply–adds `F64x8<true>` uses.
         unsafe { fly::<F64x8<true>, 8>(shots, integrator, sink) }
     } else {
+        // SAFETY: as above.
         unsafe { fly::<F64x8<false>, 8>(shots, integrator, sink) }
     }
 }
