@@ -2,7 +2,7 @@
 //! 1,024 launches, one thread): `cargo run --release -p carry-core --example lanes_timing`,
 //! optionally with one path's name (`scalar`, `avx`, `fma` (AVX and FMA), `avx512`,
 //! `avx512fma` (eight lanes a register, exact and fused), `lanes`, or in `f32`: `scalar32`,
-//! `avx32`, `lanes32`) and
+//! `avx32`, `avx512_32` (sixteen lanes a register), `lanes32`) and
 //! a number of passes. The criterion bench (`--bench lanes`) is the reference; this is for
 //! profiling.
 use carry_core::lanes::{self, Shot};
@@ -174,6 +174,13 @@ fn main() {
     time("avx32", &|| {
         let mut c = 0.0;
         lanes::fly_each_on(cpu, &shots32, &integrator32, |_, r| {
+            c += r.map_or(0.0, |o| f64::from(o.carry_m))
+        });
+        c
+    });
+    time("avx512_32", &|| {
+        let mut c = 0.0;
+        lanes::fly_each_on(avx512, &shots32, &integrator32, |_, r| {
             c += r.map_or(0.0, |o| f64::from(o.carry_m))
         });
         c
