@@ -132,6 +132,9 @@ fn fly_lanes<T: LaneReal>(
         } else {
             note_no_avx512();
         }
+        // (A lane's operations do not depend on the pack's width: the fused 8-lane packs
+        // give the fused 4-lane ones' results bit for bit.)
+        let mut fused_4 = None;
         for cpu in tokens {
             let avx = fly_lanes_on(Some(cpu.exact()), shots, integrator);
             for (i, (a, b)) in avx.iter().zip(&base).enumerate() {
@@ -145,6 +148,10 @@ fn fly_lanes<T: LaneReal>(
                 for (i, (a, b)) in fused.iter().zip(&base).enumerate() {
                     close(a, b, 1e-9, &format!("shot {i}: fused packs ({cpu:?})"));
                 }
+                if let Some(four) = &fused_4 {
+                    assert_eq!(&fused, four, "fused packs: eight lanes against four");
+                }
+                fused_4 = Some(fused);
             }
         }
     }
