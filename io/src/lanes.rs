@@ -3,7 +3,9 @@
 //! `std` checks it once (`is_x86_feature_detected!`, cached by `std`) and hands the core an
 //! [`Avx`] token where the CPU has AVX, so batches (`f64` and `f32`) fly on 256-bit packs
 //! compiled for AVX even in a baseline x86-64 build (which has SSE2 only); where it has FMA
-//! too, the token says so and the `f64` kernel fuses its multiply–adds. The results are the
+//! too, the token says so and the `f64` kernel fuses its multiply–adds; where it has
+//! AVX-512 (F and DQ), the kernel runs on 512-bit packs (eight `f64` or sixteen `f32`
+//! lanes). The results are the
 //! scalar path's bit for bit without FMA (and in `f32`), within 1e-9 relative with it
 //! (docs/performance.md, "Lanes kernel"; [`cpu_exact`] picks the exact packs). `carry batch`, the Python
 //! package and the Dask example reach the kernel through [`crate::compute::run_rows`],
