@@ -2,8 +2,10 @@
 //! drivers, hooks and slices, in still air and in a uniform wind) flown one by one with
 //! `PreparedScene::fly`, through `lanes::fly_each` (4 lanes on the build's baseline packs:
 //! SSE2 on x86-64) and, where the CPU has AVX, through `lanes::fly_each_on` with the AVX
-//! token, exact (`lanes-avx`) and with FMA where the CPU has it (`lanes-fma`: what
-//! `carry batch` and the Python package run; `carry_io::lanes`), one thread.
+//! token, exact (`lanes-avx`) and with FMA where the CPU has it (`lanes-fma`), and where
+//! it has AVX-512 on eight lanes a register, exact (`lanes-avx512`) and fused
+//! (`lanes-avx512-fma`: what `carry batch` and the Python package run there;
+//! `carry_io::lanes`), one thread.
 //! Throughput is per shot.
 //!
 //! `cargo bench -p carry-core --bench lanes`; figures in docs/performance.md ("Lanes kernel").
@@ -88,7 +90,24 @@ fn bench(c: &mut Criterion) {
         #[allow(unsafe_code)]
         // SAFETY: `with_fma_unchecked` requires FMA, which was just detected.
         let fma = fma.map(|c| unsafe { c.with_fma_unchecked() });
-        for (name, cpu) in [("lanes-avx", avx()), ("lanes-fma", fma)] {
+        // AVX-512 (eight `f64` lanes a register) where the CPU has AVX-512 F and DQ.
+        let avx512 = avx().filter(|_| {
+            is_x86_feature_detected!("avx512f") && is_x86_feature_detected!("avx512dq")
+        });
+        #[allow(unsafe_code)]
+        // SAFETY: `with_avx512_unchecked` requires AVX-512 F and DQ, just detected.
+        let avx512 = avx512.map(|c| unsafe { c.with_avx512_unchecked() });
+        #[allow(unsafe_code)]
+        // SAFETY: AVX-512 F has the fused multiply–adds (and FMA was detected).
+        let avx512_fma = avx512
+            .zip(fma)
+            .map(|(c, _)| unsafe { c.with_fma_unchecked() });
+        for (name, cpu) in [
+            ("lanes-avx", avx()),
+            ("lanes-fma", fma),
+            ("lanes-avx512", avx512),
+            ("lanes-avx512-fma", avx512_fma),
+        ] {
             let Some(cpu) = cpu else { continue };
             g.bench_function(name, |b| {
                 b.iter(|| {

@@ -1,6 +1,7 @@
 //! How far the lanes kernel with FMA (`lanes::Avx::with_fma_unchecked`) moves results from
-//! the scalar path's: `cargo run --release -p carry-core --example lanes_fma [SHOTS]`
-//! (default 1,000,000 shots a set). Random launches (wedges to drivers, toppers, hooks and
+//! the scalar path's: `cargo run --release -p carry-core --example lanes_fma [SHOTS]
+//! [avx512]` (default 1,000,000 shots a set; `avx512`: on the eight-lane AVX-512 packs, fused
+//! and exact, rather than the four-lane AVX ones). Random launches (wedges to drivers, toppers, hooks and
 //! slices) through random covered scenes (uniform winds, air, landing height, tee,
 //! `tour2023`/`drives2026`), in chunks of 4,096 shots over 64 scenes: one set with the
 //! default integrator, one with a random tolerance 1e-10..1e-2 a chunk (the property
@@ -118,11 +119,22 @@ fn main() {
     }
     #[allow(unsafe_code)]
     // SAFETY: AVX and FMA were just detected.
-    let fma = unsafe { Avx::new_unchecked().with_fma_unchecked() };
+    let mut fma = unsafe { Avx::new_unchecked().with_fma_unchecked() };
     let n: usize = std::env::args()
         .nth(1)
         .and_then(|s| s.parse().ok())
         .unwrap_or(1_000_000);
+    if std::env::args().nth(2).as_deref() == Some("avx512") {
+        if !(is_x86_feature_detected!("avx512f") && is_x86_feature_detected!("avx512dq")) {
+            println!("this CPU lacks AVX-512 F or DQ");
+            return;
+        }
+        #[allow(unsafe_code)]
+        // SAFETY: AVX-512 F and DQ were just detected.
+        let wide = unsafe { fma.with_avx512_unchecked() };
+        fma = wide;
+        println!("on the AVX-512 packs (eight lanes)");
+    }
     let ball = Ball::standard();
     for (set, random_tolerance) in [
         ("default integrator", false),

@@ -1,7 +1,8 @@
 //! Quick timing of the lanes kernel against the scalar path (medians of repeated runs over
 //! 1,024 launches, one thread): `cargo run --release -p carry-core --example lanes_timing`,
-//! optionally with one path's name (`scalar`, `avx`, `fma` (AVX and FMA), `lanes`, or in `f32`: `scalar32`,
-//! `avx32`, `lanes32`) and
+//! optionally with one path's name (`scalar`, `avx`, `fma` (AVX and FMA), `avx512`,
+//! `avx512fma` (eight lanes a register, exact and fused), `lanes`, or in `f32`: `scalar32`,
+//! `avx32`, `avx512_32` (sixteen lanes a register), `lanes32`) and
 //! a number of passes. The criterion bench (`--bench lanes`) is the reference; this is for
 //! profiling.
 use carry_core::lanes::{self, Shot};
@@ -107,6 +108,34 @@ fn main() {
         });
         c
     });
+    // AVX-512 (eight `f64` lanes a register), exact and fused, where the CPU has it.
+    #[allow(unsafe_code)]
+    // SAFETY: `with_avx512_unchecked` requires AVX-512 F and DQ, which were just detected.
+    let avx512 = cpu
+        .filter(|_| is_x86_feature_detected!("avx512f") && is_x86_feature_detected!("avx512dq"))
+        .map(|c| unsafe { c.with_avx512_unchecked() });
+    for (name, cpu) in [
+        ("avx512", avx512),
+        ("avx512fma", avx512.filter(|_| fma.is_some())),
+    ] {
+        let Some(cpu) = cpu else { continue };
+        let cpu = if name == "avx512fma" {
+            #[allow(unsafe_code)]
+            // SAFETY: FMA was detected (and AVX-512 F has the fused multiply–adds).
+            unsafe {
+                cpu.with_fma_unchecked()
+            }
+        } else {
+            cpu
+        };
+        time(name, &|| {
+            let mut c = 0.0;
+            lanes::fly_each_on(Some(cpu), &shots, &integrator, |_, r| {
+                c += r.map_or(0.0, |o| o.carry_m)
+            });
+            c
+        });
+    }
     time("lanes", &|| {
         let mut c = 0.0;
         lanes::fly_each(&shots, &integrator, |_, r| {
@@ -145,6 +174,13 @@ fn main() {
     time("avx32", &|| {
         let mut c = 0.0;
         lanes::fly_each_on(cpu, &shots32, &integrator32, |_, r| {
+            c += r.map_or(0.0, |o| f64::from(o.carry_m))
+        });
+        c
+    });
+    time("avx512_32", &|| {
+        let mut c = 0.0;
+        lanes::fly_each_on(avx512, &shots32, &integrator32, |_, r| {
             c += r.map_or(0.0, |o| f64::from(o.carry_m))
         });
         c

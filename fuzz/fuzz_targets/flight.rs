@@ -217,9 +217,10 @@ fn run<T: LaneReal>(b: &mut Bytes<'_>) -> Result<()> {
 }
 
 /// The lanes kernel (issue 37) gives every shot of a batch the scalar path's result, error
-/// or not: bit for bit on the build's baseline packs and on the exact AVX packs; on the
-/// fused packs (AVX and FMA, what `carry batch` flies where the CPU has both) the same
-/// error, or the figures within 1e-9 relative (at least 1 m, 1 s, 1 rad of scale).
+/// or not: bit for bit on the build's baseline packs and on the exact AVX packs (four lanes,
+/// and eight where the CPU has AVX-512); on the fused packs (AVX and FMA, or AVX-512: what
+/// `carry batch` flies where the CPU has them) the same error, or the figures within 1e-9
+/// relative (at least 1 m, 1 s, 1 rad of scale).
 fn lanes_agree<T: LaneReal>(
     scene: &PreparedScene<T>,
     motion: &BallMotion<T>,
@@ -233,7 +234,10 @@ fn lanes_agree<T: LaneReal>(
     let shots = [shot; 3];
     let cpu = carry_io::lanes::cpu();
     let mut packs = vec![(None, true)];
-    if let Some(c) = cpu {
+    // The 256-bit packs (four `f64` lanes) and, where the CPU has AVX-512, the 512-bit
+    // ones (eight lanes): exact bit for bit, fused within 1e-9.
+    let tokens = cpu.map(|c| [Some(c.avx256()), c.avx512().then_some(c)]);
+    for c in tokens.into_iter().flatten().flatten() {
         packs.push((Some(c.exact()), true));
         if c.fma() {
             packs.push((Some(c), false));

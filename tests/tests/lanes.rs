@@ -116,21 +116,42 @@ fn fly_lanes_on<T: LaneReal>(
 /// order; where the CPU has AVX, also through the exact AVX packs (`Avx::exact`), which
 /// must give the very same results, and where it has FMA too, through the fused packs
 /// (`carry_io::lanes::cpu`'s choice), whose results must be within 1e-9 of them
-/// ([`close`]).
+/// ([`close`]); both on four lanes (`Avx::avx256`) and, where the CPU has AVX-512, on
+/// eight.
 fn fly_lanes<T: LaneReal>(
     shots: &[Shot<'_, T>],
     integrator: &Integrator<T>,
 ) -> Vec<Result<FlightOutcome<T>>> {
     let base = fly_lanes_on(None, shots, integrator);
     if let Some(cpu) = carry_io::lanes::cpu() {
-        let avx = fly_lanes_on(Some(cpu.exact()), shots, integrator);
-        for (i, (a, b)) in avx.iter().zip(&base).enumerate() {
-            assert_eq!(a, b, "shot {i}: AVX packs against the baseline ones");
+        // The 256-bit packs, and where the CPU has AVX-512 the 512-bit ones (eight `f64`
+        // lanes; `cpu()` prefers them): exact ones bit for bit, fused ones within 1e-9.
+        let mut tokens = vec![cpu.avx256()];
+        if cpu.avx512() {
+            tokens.push(cpu);
+        } else {
+            note_no_avx512();
         }
-        if cpu.fma() {
-            let fused = fly_lanes_on(Some(cpu), shots, integrator);
-            for (i, (a, b)) in fused.iter().zip(&base).enumerate() {
-                close(a, b, 1e-9, &format!("shot {i}: AVX and FMA packs"));
+        // (A lane's operations do not depend on the pack's width: the fused 8-lane packs
+        // give the fused 4-lane ones' results bit for bit.)
+        let mut fused_4 = None;
+        for cpu in tokens {
+            let avx = fly_lanes_on(Some(cpu.exact()), shots, integrator);
+            for (i, (a, b)) in avx.iter().zip(&base).enumerate() {
+                assert_eq!(
+                    a, b,
+                    "shot {i}: AVX packs ({cpu:?}) against the baseline ones"
+                );
+            }
+            if cpu.fma() {
+                let fused = fly_lanes_on(Some(cpu), shots, integrator);
+                for (i, (a, b)) in fused.iter().zip(&base).enumerate() {
+                    close(a, b, 1e-9, &format!("shot {i}: fused packs ({cpu:?})"));
+                }
+                if let Some(four) = &fused_4 {
+                    assert_eq!(&fused, four, "fused packs: eight lanes against four");
+                }
+                fused_4 = Some(fused);
             }
         }
     }
@@ -144,6 +165,12 @@ fn fly_lanes<T: LaneReal>(
         );
     }
     base
+}
+
+/// Says once that this CPU has no AVX-512, so its packs are not checked here.
+fn note_no_avx512() {
+    static ONCE: std::sync::Once = std::sync::Once::new();
+    ONCE.call_once(|| println!("note: no AVX-512 on this CPU; its packs not checked"));
 }
 
 /// Flights that fail in the air, lane by lane: a time limit shorter than most flights (the

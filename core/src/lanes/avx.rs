@@ -46,6 +46,9 @@ pub(super) fn fly_each(
     integrator: &Integrator<f64>,
     sink: &mut dyn FnMut(usize, Result<FlightOutcome<f64>>),
 ) {
+    if cpu.avx512() {
+        return super::avx512::fly_each(cpu, shots, integrator, sink);
+    }
     if cpu.fma() {
         // SAFETY: a token with FMA exists only where its creator checked that the CPU has
         // AVX and FMA (`Avx::new_unchecked`'s and `Avx::with_fma_unchecked`'s contracts),
@@ -249,11 +252,14 @@ static MASKS: [[f64; 4]; 16] = {
 
 /// Flies `f32` shots as [`super::fly_each`] does, on AVX packs of eight lanes.
 pub(super) fn fly_each_f32(
-    _cpu: Avx,
+    cpu: Avx,
     shots: &[Shot<'_, f32>],
     integrator: &Integrator<f32>,
     sink: &mut dyn FnMut(usize, Result<FlightOutcome<f32>>),
 ) {
+    if cpu.avx512() {
+        return super::avx512::fly_each_f32(cpu, shots, integrator, sink);
+    }
     // SAFETY: as in `fly_each`: the token means the CPU has AVX, which `fly` requires.
     unsafe { fly::<F32x8, 8>(shots, integrator, sink) }
 }

@@ -3,8 +3,8 @@
 //! own acceptance, apex and landing; a lane that lands (or fails) is refilled at once with
 //! the next shot, so the lanes stay full until the batch runs out. The force evaluations,
 //! the Runge–Kutta stages, the error norm, the acceptance test and the step controller run
-//! across the lanes on SIMD packs (`wide`'s, or AVX registers through an [`Avx`] token:
-//! [`fly_each_on`]), the lanes' `t`, `h` and states kept in packs between steps. On the AVX
+//! across the lanes on SIMD packs (`wide`'s, or AVX or AVX-512 registers through an [`Avx`]
+//! token: [`fly_each_on`]), the lanes' `t`, `h` and states kept in packs between steps. On the AVX
 //! packs the apex and the landing are located packed too (one Newton root finding across
 //! the lanes, each on its own interpolant, the scalar tracker's operations); a lane's event
 //! decision and outcome, a refill and a failure are handled lane by lane, and a landing that
@@ -45,6 +45,8 @@
 
 #[cfg(target_arch = "x86_64")]
 mod avx;
+#[cfg(target_arch = "x86_64")]
+mod avx512;
 #[doc(hidden)]
 pub mod kernel;
 
@@ -65,7 +67,9 @@ use nalgebra::Vector3;
 
 /// Shots advanced together by [`fly_each`]: 4 (`f64`: one AVX register with the [`Avx`]
 /// token, else a `wide::f64x4`, two SSE2 registers on baseline x86-64; docs/performance.md).
-/// [`fly_each_on`] with the token flies `f32` shots eight at a time (one AVX register).
+/// [`fly_each_on`] with the token flies `f32` shots eight at a time (one AVX register), and
+/// with a token with AVX-512 `f64` shots eight and `f32` shots sixteen at a time (one
+/// 512-bit register).
 pub const LANES: usize = 4;
 
 /// A precision the lanes kernel computes in, with its SIMD pack of [`LANES`] lanes
@@ -75,7 +79,8 @@ pub trait LaneReal: Real {
     #[doc(hidden)]
     type Pack: Pack<Scalar = Self>;
 
-    /// [`fly_each`] on this precision's AVX packs (four `f64` or eight `f32` lanes).
+    /// [`fly_each`] on this precision's AVX packs (four `f64` or eight `f32` lanes; with
+    /// AVX-512, eight `f64` or sixteen `f32`).
     #[cfg(target_arch = "x86_64")]
     #[doc(hidden)]
     fn fly_each_avx(
@@ -142,9 +147,16 @@ impl LaneReal for f32 {
 /// its multiply–adds (one rounding instead of two): faster, and each figure within 1e-9
 /// relative of the scalar path's rather than equal (docs/performance.md, "Lanes kernel";
 /// `f32` stays exact).
+///
+/// With AVX-512 ([`Avx::with_avx512_unchecked`]: AVX-512 F and DQ) the kernel runs on
+/// 512-bit packs, eight `f64` or sixteen `f32` lanes, fused (`f64`) or exact as the token's
+/// FMA says: the exact ones are the scalar path's bit for bit too, and the fused ones give
+/// the fused 256-bit packs' results bit for bit (a lane's operations do not depend on the
+/// pack's width).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Avx {
     fma: bool,
+    avx512: bool,
 }
 
 impl Avx {
@@ -156,7 +168,10 @@ impl Avx {
     #[allow(unsafe_code)]
     #[must_use]
     pub const unsafe fn new_unchecked() -> Self {
-        Self { fma: false }
+        Self {
+            fma: false,
+            avx512: false,
+        }
     }
 
     /// The token with FMA: the `f64` kernel fuses its multiply–adds.
@@ -167,19 +182,51 @@ impl Avx {
     #[allow(unsafe_code)]
     #[must_use]
     pub const unsafe fn with_fma_unchecked(self) -> Self {
-        Self { fma: true }
+        Self { fma: true, ..self }
     }
 
-    /// The token without FMA: the packs whose results are the scalar path's bit for bit.
+    /// The token with AVX-512: the `f64` kernel runs on eight lanes a 512-bit register
+    /// (fused with FMA, else bit for bit the scalar path's).
+    ///
+    /// # Safety
+    /// The CPU that runs the program must also have AVX-512 F and DQ (and the OS must save
+    /// their registers): what `std::is_x86_feature_detected!("avx512f")` and `("avx512dq")`
+    /// check.
+    #[allow(unsafe_code)]
+    #[must_use]
+    pub const unsafe fn with_avx512_unchecked(self) -> Self {
+        Self {
+            avx512: true,
+            ..self
+        }
+    }
+
+    /// The token without FMA: the packs whose results are the scalar path's bit for bit
+    /// (eight lanes a register with AVX-512, four without).
     #[must_use]
     pub const fn exact(self) -> Self {
-        Self { fma: false }
+        Self { fma: false, ..self }
+    }
+
+    /// The token without AVX-512: the 256-bit packs (four `f64` lanes).
+    #[must_use]
+    pub const fn avx256(self) -> Self {
+        Self {
+            avx512: false,
+            ..self
+        }
     }
 
     /// Whether the `f64` kernel fuses its multiply–adds with this token.
     #[must_use]
     pub const fn fma(self) -> bool {
         self.fma
+    }
+
+    /// Whether the `f64` kernel runs on AVX-512 packs (eight lanes) with this token.
+    #[must_use]
+    pub const fn avx512(self) -> bool {
+        self.avx512
     }
 }
 
