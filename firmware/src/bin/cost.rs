@@ -267,6 +267,10 @@ fn suite<T: Real>(ticks: &Ticks, k: &mut u32, p: &str) {
             label!("FULL SHOT + ground, fairway-trackman (to rest)"),
             carry_core::ground::Surface::FairwayTrackman,
         ),
+        (
+            label!("FULL SHOT + ground, fairway-joint (to rest)"),
+            carry_core::ground::Surface::FairwayJoint,
+        ),
     ] {
         let with_ground = Scene::<T> {
             ground: Some(carry_core::ground::Ground::level(surface)),
