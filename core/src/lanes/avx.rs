@@ -37,7 +37,6 @@ use core::arch::x86_64::{
     _mm256_mul_ps, _mm256_or_pd, _mm256_or_ps, _mm256_set1_pd, _mm256_set1_ps, _mm256_sqrt_pd,
     _mm256_sqrt_ps, _mm256_sub_pd, _mm256_sub_ps, _mm256_xor_pd, _mm256_xor_ps,
 };
-use core::ops::{Add, BitAnd, BitOr, BitXor, Div, Mul, Not, Sub};
 
 /// Flies `shots` as [`super::fly_each`] does, on AVX packs.
 pub(super) fn fly_each(
@@ -98,50 +97,12 @@ macro_rules! avx {
     };
 }
 
-macro_rules! op {
-    ($tr:ident, $f:ident, $intr:ident) => {
-        impl<const FMA: bool> $tr for F64x4<FMA> {
-            type Output = Self;
-            #[inline(always)]
-            fn $f(self, o: Self) -> Self {
-                Self(avx!($intr(self.0, o.0)))
-            }
-        }
-    };
-}
-op!(Add, add, _mm256_add_pd);
-op!(Sub, sub, _mm256_sub_pd);
-op!(Mul, mul, _mm256_mul_pd);
-op!(Div, div, _mm256_div_pd);
-op!(BitAnd, bitand, _mm256_and_pd);
-op!(BitOr, bitor, _mm256_or_pd);
-op!(BitXor, bitxor, _mm256_xor_pd);
-
-impl<const FMA: bool> Not for F64x4<FMA> {
-    type Output = Self;
-    #[inline(always)]
-    fn not(self) -> Self {
-        self ^ Self(avx!(_mm256_set1_pd(f64::from_bits(!0))))
-    }
-}
+x86_pack!(
+    impl[const FMA: bool] F64x4<FMA>, f64, 4, avx, _mm256_set1_pd,
+    [_mm256_add_pd, _mm256_sub_pd, _mm256_mul_pd, _mm256_div_pd, _mm256_and_pd, _mm256_or_pd, _mm256_xor_pd]
+);
 
 impl<const FMA: bool> F64x4<FMA> {
-    /// The lanes in place (one scalar load or store each, also where the caller is not
-    /// compiled for AVX and would otherwise move the whole register through memory).
-    #[inline(always)]
-    fn lanes(&self) -> &[f64; 4] {
-        // SAFETY: `F64x4` is a transparent `__m256d`, 32 bytes aligned to 32, which holds
-        // four `f64` (any bit pattern valid) at 8-byte alignment: the layout of `[f64; 4]`.
-        unsafe { &*core::ptr::from_ref(self).cast::<[f64; 4]>() }
-    }
-
-    /// See [`F64x4::lanes`].
-    #[inline(always)]
-    fn lanes_mut(&mut self) -> &mut [f64; 4] {
-        // SAFETY: as in `lanes`; the borrow is unique.
-        unsafe { &mut *core::ptr::from_mut(self).cast::<[f64; 4]>() }
-    }
-
     /// The pack of an array.
     #[inline(always)]
     fn from_array(a: [f64; 4]) -> Self {
@@ -271,49 +232,10 @@ pub(super) fn fly_each_f32(
 #[repr(transparent)]
 struct F32x8(__m256);
 
-macro_rules! op32 {
-    ($tr:ident, $f:ident, $intr:ident) => {
-        impl $tr for F32x8 {
-            type Output = Self;
-            #[inline(always)]
-            fn $f(self, o: Self) -> Self {
-                Self(avx!($intr(self.0, o.0)))
-            }
-        }
-    };
-}
-op32!(Add, add, _mm256_add_ps);
-op32!(Sub, sub, _mm256_sub_ps);
-op32!(Mul, mul, _mm256_mul_ps);
-op32!(Div, div, _mm256_div_ps);
-op32!(BitAnd, bitand, _mm256_and_ps);
-op32!(BitOr, bitor, _mm256_or_ps);
-op32!(BitXor, bitxor, _mm256_xor_ps);
-
-impl Not for F32x8 {
-    type Output = Self;
-    #[inline(always)]
-    fn not(self) -> Self {
-        self ^ Self(avx!(_mm256_set1_ps(f32::from_bits(!0))))
-    }
-}
-
-impl F32x8 {
-    /// The lanes in place (see [`F64x4::lanes`]).
-    #[inline(always)]
-    fn lanes(&self) -> &[f32; 8] {
-        // SAFETY: `F32x8` is a transparent `__m256`, 32 bytes aligned to 32, which holds
-        // eight `f32` (any bit pattern valid) at 4-byte alignment: the layout of `[f32; 8]`.
-        unsafe { &*core::ptr::from_ref(self).cast::<[f32; 8]>() }
-    }
-
-    /// See [`F32x8::lanes`].
-    #[inline(always)]
-    fn lanes_mut(&mut self) -> &mut [f32; 8] {
-        // SAFETY: as in `lanes`; the borrow is unique.
-        unsafe { &mut *core::ptr::from_mut(self).cast::<[f32; 8]>() }
-    }
-}
+x86_pack!(
+    impl[] F32x8, f32, 8, avx, _mm256_set1_ps,
+    [_mm256_add_ps, _mm256_sub_ps, _mm256_mul_ps, _mm256_div_ps, _mm256_and_ps, _mm256_or_ps, _mm256_xor_ps]
+);
 
 impl Pack for F32x8 {
     type Scalar = f32;

@@ -36,7 +36,6 @@ use core::arch::x86_64::{
     _mm512_or_pd, _mm512_or_ps, _mm512_set1_pd, _mm512_set1_ps, _mm512_sqrt_pd, _mm512_sqrt_ps,
     _mm512_sub_pd, _mm512_sub_ps, _mm512_xor_pd, _mm512_xor_ps,
 };
-use core::ops::{Add, BitAnd, BitOr, BitXor, Div, Mul, Not, Sub};
 
 /// Flies `shots` as [`super::fly_each`] does, on AVX-512 packs of eight `f64` lanes.
 pub(super) fn fly_each(
@@ -84,49 +83,12 @@ macro_rules! avx512 {
     };
 }
 
-macro_rules! op {
-    ($tr:ident, $f:ident, $intr:ident) => {
-        impl<const FMA: bool> $tr for F64x8<FMA> {
-            type Output = Self;
-            #[inline(always)]
-            fn $f(self, o: Self) -> Self {
-                Self(avx512!($intr(self.0, o.0)))
-            }
-        }
-    };
-}
-op!(Add, add, _mm512_add_pd);
-op!(Sub, sub, _mm512_sub_pd);
-op!(Mul, mul, _mm512_mul_pd);
-op!(Div, div, _mm512_div_pd);
-op!(BitAnd, bitand, _mm512_and_pd);
-op!(BitOr, bitor, _mm512_or_pd);
-op!(BitXor, bitxor, _mm512_xor_pd);
-
-impl<const FMA: bool> Not for F64x8<FMA> {
-    type Output = Self;
-    #[inline(always)]
-    fn not(self) -> Self {
-        self ^ Self(avx512!(_mm512_set1_pd(f64::from_bits(!0))))
-    }
-}
+x86_pack!(
+    impl[const FMA: bool] F64x8<FMA>, f64, 8, avx512, _mm512_set1_pd,
+    [_mm512_add_pd, _mm512_sub_pd, _mm512_mul_pd, _mm512_div_pd, _mm512_and_pd, _mm512_or_pd, _mm512_xor_pd]
+);
 
 impl<const FMA: bool> F64x8<FMA> {
-    /// The lanes in place (one scalar load or store each).
-    #[inline(always)]
-    fn lanes(&self) -> &[f64; 8] {
-        // SAFETY: `F64x8` is a transparent `__m512d`, 64 bytes aligned to 64, which holds
-        // eight `f64` (any bit pattern valid) at 8-byte alignment: the layout of `[f64; 8]`.
-        unsafe { &*core::ptr::from_ref(self).cast::<[f64; 8]>() }
-    }
-
-    /// See [`F64x8::lanes`].
-    #[inline(always)]
-    fn lanes_mut(&mut self) -> &mut [f64; 8] {
-        // SAFETY: as in `lanes`; the borrow is unique.
-        unsafe { &mut *core::ptr::from_mut(self).cast::<[f64; 8]>() }
-    }
-
     /// The mask's lanes as AVX-512's `__mmask8` (the sign bit of each lane).
     #[inline(always)]
     fn k(self) -> u8 {
@@ -233,50 +195,12 @@ pub(super) fn fly_each_f32(
 #[repr(transparent)]
 struct F32x16(__m512);
 
-macro_rules! op32 {
-    ($tr:ident, $f:ident, $intr:ident) => {
-        impl $tr for F32x16 {
-            type Output = Self;
-            #[inline(always)]
-            fn $f(self, o: Self) -> Self {
-                Self(avx512!($intr(self.0, o.0)))
-            }
-        }
-    };
-}
-op32!(Add, add, _mm512_add_ps);
-op32!(Sub, sub, _mm512_sub_ps);
-op32!(Mul, mul, _mm512_mul_ps);
-op32!(Div, div, _mm512_div_ps);
-op32!(BitAnd, bitand, _mm512_and_ps);
-op32!(BitOr, bitor, _mm512_or_ps);
-op32!(BitXor, bitxor, _mm512_xor_ps);
-
-impl Not for F32x16 {
-    type Output = Self;
-    #[inline(always)]
-    fn not(self) -> Self {
-        self ^ Self(avx512!(_mm512_set1_ps(f32::from_bits(!0))))
-    }
-}
+x86_pack!(
+    impl[] F32x16, f32, 16, avx512, _mm512_set1_ps,
+    [_mm512_add_ps, _mm512_sub_ps, _mm512_mul_ps, _mm512_div_ps, _mm512_and_ps, _mm512_or_ps, _mm512_xor_ps]
+);
 
 impl F32x16 {
-    /// The lanes in place (see [`F64x8::lanes`]).
-    #[inline(always)]
-    fn lanes(&self) -> &[f32; 16] {
-        // SAFETY: `F32x16` is a transparent `__m512`, 64 bytes aligned to 64, which holds
-        // sixteen `f32` (any bit pattern valid) at 4-byte alignment: the layout of
-        // `[f32; 16]`.
-        unsafe { &*core::ptr::from_ref(self).cast::<[f32; 16]>() }
-    }
-
-    /// See [`F32x16::lanes`].
-    #[inline(always)]
-    fn lanes_mut(&mut self) -> &mut [f32; 16] {
-        // SAFETY: as in `lanes`; the borrow is unique.
-        unsafe { &mut *core::ptr::from_mut(self).cast::<[f32; 16]>() }
-    }
-
     /// The mask's lanes as AVX-512's `__mmask16` (the sign bit of each lane).
     #[inline(always)]
     fn k(self) -> u16 {

@@ -43,6 +43,64 @@
 //! # Ok::<(), carry_core::Error>(())
 //! ```
 
+/// What every x86 pack ([`avx`]'s and [`avx512`]'s) writes the same way: its operators,
+/// each one intrinsic on the register it wraps (`[+, −, ×, ÷, &, |, ^]` in that order),
+/// `!` as `^` with all ones (`$set1`), and its `N` lanes in place (`lanes`, `lanes_mut`:
+/// one scalar load or store each, also where the caller is not compiled for the
+/// register's features and would otherwise move the whole register through memory).
+/// `$safe` is the module's macro that runs an intrinsic under its soundness note (a pack
+/// exists only inside code compiled for, and run on, a CPU with its features).
+#[cfg(target_arch = "x86_64")]
+macro_rules! x86_pack {
+    (
+        impl[$($gen:tt)*] $pack:ty, $scalar:ty, $n:literal, $safe:ident, $set1:ident,
+        [$add:ident, $sub:ident, $mul:ident, $div:ident, $and:ident, $or:ident, $xor:ident]
+    ) => {
+        x86_pack!(@op [$($gen)*] $pack, $safe, Add, add, $add);
+        x86_pack!(@op [$($gen)*] $pack, $safe, Sub, sub, $sub);
+        x86_pack!(@op [$($gen)*] $pack, $safe, Mul, mul, $mul);
+        x86_pack!(@op [$($gen)*] $pack, $safe, Div, div, $div);
+        x86_pack!(@op [$($gen)*] $pack, $safe, BitAnd, bitand, $and);
+        x86_pack!(@op [$($gen)*] $pack, $safe, BitOr, bitor, $or);
+        x86_pack!(@op [$($gen)*] $pack, $safe, BitXor, bitxor, $xor);
+
+        impl<$($gen)*> core::ops::Not for $pack {
+            type Output = Self;
+            #[inline(always)]
+            fn not(self) -> Self {
+                self ^ Self($safe!($set1(<$scalar>::from_bits(!0))))
+            }
+        }
+
+        impl<$($gen)*> $pack {
+            /// The lanes in place.
+            #[inline(always)]
+            fn lanes(&self) -> &[$scalar; $n] {
+                // SAFETY: the pack is a transparent SIMD register of exactly `N` lanes of
+                // its scalar (any bit pattern valid), aligned at least as the scalar: the
+                // layout of `[scalar; N]`.
+                unsafe { &*core::ptr::from_ref(self).cast::<[$scalar; $n]>() }
+            }
+
+            /// See `lanes`.
+            #[inline(always)]
+            fn lanes_mut(&mut self) -> &mut [$scalar; $n] {
+                // SAFETY: as in `lanes`; the borrow is unique.
+                unsafe { &mut *core::ptr::from_mut(self).cast::<[$scalar; $n]>() }
+            }
+        }
+    };
+    (@op [$($gen:tt)*] $pack:ty, $safe:ident, $tr:ident, $f:ident, $intr:ident) => {
+        impl<$($gen)*> core::ops::$tr for $pack {
+            type Output = Self;
+            #[inline(always)]
+            fn $f(self, o: Self) -> Self {
+                Self($safe!($intr(self.0, o.0)))
+            }
+        }
+    };
+}
+
 #[cfg(target_arch = "x86_64")]
 mod avx;
 #[cfg(target_arch = "x86_64")]
