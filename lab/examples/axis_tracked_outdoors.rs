@@ -28,6 +28,7 @@
 //!
 //! The axis the track implies: TrackMan's axis moved by the tracked curvature's excess over
 //! (A), read through (A)'s curvature per degree of axis (a flight with the axis 1° right).
+//! Last, TrackMan's and the model's axis by face-to-path band, indoors against outdoors.
 //!
 //! `cargo run --release -p carry-lab --example axis_tracked_outdoors`
 //! (`$CARRY_DRIVES` overrides the file's path.)
@@ -395,16 +396,82 @@ fn implied_axes(rows: &[(Row, [Flown; 4])], c: &[[f64; 5]]) -> Vec<f64> {
         .collect()
 }
 
+/// The face-to-path bands (°).
+const BANDS: [(f64, f64); 6] = [
+    (f64::NEG_INFINITY, -4.0),
+    (-4.0, -2.0),
+    (-2.0, 0.0),
+    (0.0, 2.0),
+    (2.0, 4.0),
+    (4.0, f64::INFINITY),
+];
+
+fn band_name(lo: f64, hi: f64) -> String {
+    match (lo.is_finite(), hi.is_finite()) {
+        (false, _) => format!("< {hi:+}°"),
+        (_, false) => format!("≥ {lo:+}°"),
+        _ => format!("{lo:+} … {hi:+}°"),
+    }
+}
+
+/// A row of [`axis_by_band`]: tracked outdoors, face-to-path (°), TrackMan's and the model's
+/// axis (°), the strike toward the toe (m) when measured.
+type BandRow = (bool, f64, f64, f64, Option<f64>);
+
+/// TrackMan's and the model's axis by face-to-path band, indoors and outdoors (all rows
+/// with a full delivery and a plausible launch; the model at the measured strike location
+/// when there is one), with the mean strike location toward the toe where measured.
+fn axis_by_band(all: &[Drive], law: ContactLaw<f64>, typical: [f64; 2]) {
+    let rows: Vec<BandRow> = all
+        .par_iter()
+        .filter_map(|d| {
+            let tm = single_drives::observed(d)?;
+            let club = d.full_delivery()?;
+            let model = single_drives::predict(d, law, true, typical).ok()?;
+            Some((
+                d.tracked_outdoors(),
+                club[4] - club[2],
+                tm[4],
+                model[4],
+                d.strike_m.map(|s| s[0]),
+            ))
+        })
+        .collect();
+    println!(
+        "\n### TrackMan's and the model's axis by face-to-path band, indoors and tracked outdoors (all rows with a full delivery and a plausible launch)\n"
+    );
+    println!(
+        "| face-to-path | indoors: rows, mean face-to-path | TrackMan / model axis (mean °) | strike toward the toe (mean mm, rows) | outdoors: rows, mean face-to-path | TrackMan / model axis (mean °) |"
+    );
+    println!("|---|---|---|---|---|---|");
+    for (lo, hi) in BANDS {
+        let of = |out: bool| -> Vec<&BandRow> {
+            rows.iter()
+                .filter(|r| r.0 == out && (lo..hi).contains(&r.1))
+                .collect()
+        };
+        let cell = |v: &[&BandRow]| -> [String; 2] {
+            let m = |k: fn(&BandRow) -> f64| mean(&v.iter().map(|r| k(r)).collect::<Vec<f64>>());
+            [
+                format!("{}, {:+.1}°", v.len(), m(|r| r.1)),
+                format!("{:+.1} / {:+.1}", m(|r| r.2), m(|r| r.3)),
+            ]
+        };
+        let (inside, outside) = (of(false), of(true));
+        let toe: Vec<f64> = inside.iter().filter_map(|r| r.4).collect();
+        let [ni, ai] = cell(&inside);
+        let [no, ao] = cell(&outside);
+        println!(
+            "| {} | {ni} | {ai} | {:+.1}, {} | {no} | {ao} |",
+            band_name(lo, hi),
+            mean(&toe) * 1e3,
+            toe.len()
+        );
+    }
+}
+
 /// The residuals by face-to-path band, outing offsets removed (each flight's own).
 fn bands(rows: &[(Row, [Flown; 4])], at: At, label: &str) {
-    const BANDS: [(f64, f64); 6] = [
-        (f64::NEG_INFINITY, -4.0),
-        (-4.0, -2.0),
-        (-2.0, 0.0),
-        (0.0, 2.0),
-        (2.0, 4.0),
-        (4.0, f64::INFINITY),
-    ];
     let groups: Vec<usize> = rows.iter().map(|(r, _)| r.outing).collect();
     let c: Vec<[f64; 5]> = rows.iter().map(|(r, f)| curvatures(r, f, at)).collect();
     let resid = |k: usize| -> Vec<f64> {
@@ -452,11 +519,7 @@ fn bands(rows: &[(Row, [Flown; 4])], at: At, label: &str) {
         let ax_m = mean(&pick(
             &rows.iter().map(|(r, _)| r.model[4]).collect::<Vec<_>>(),
         ));
-        let band = match (lo.is_finite(), hi.is_finite()) {
-            (false, _) => format!("< {hi:+}°"),
-            (_, false) => format!("≥ {lo:+}°"),
-            _ => format!("{lo:+} … {hi:+}°"),
-        };
+        let band = band_name(lo, hi);
         println!(
             "| {band} | {} | {:+.1} | {:+.2} | {ax_tm:+.1} / {:+.1} / {ax_m:+.1} | {:+.1} / {:+.1} / {:+.1} | {:+.1}, {:.1} | {:+.1}, {:.1} | {:+.1}, {:.1} |",
             idx.len(),
@@ -649,4 +712,5 @@ fn main() {
         }
         bands(&flown, At::Length, "all balls");
     }
+    axis_by_band(&all, law, typical);
 }
