@@ -415,8 +415,8 @@ fn band_name(lo: f64, hi: f64) -> String {
 }
 
 /// A row of [`axis_by_band`]: tracked outdoors, face-to-path (°), TrackMan's and the model's
-/// axis (°), the strike toward the toe (m) when measured.
-type BandRow = (bool, f64, f64, f64, Option<f64>);
+/// axis (°), the strike toward the toe (m) when measured, the session block.
+type BandRow = (bool, f64, f64, f64, Option<f64>, usize);
 
 /// TrackMan's and the model's axis by face-to-path band, indoors and outdoors (all rows
 /// with a full delivery and a plausible launch; the model at the measured strike location
@@ -434,9 +434,11 @@ fn axis_by_band(all: &[Drive], law: ContactLaw<f64>, typical: [f64; 2]) {
                 tm[4],
                 model[4],
                 d.strike_m.map(|s| s[0]),
+                d.session(),
             ))
         })
         .collect();
+    errors_in_variables(&rows);
     println!(
         "\n### TrackMan's and the model's axis by face-to-path band, indoors and tracked outdoors (all rows with a full delivery and a plausible launch)\n"
     );
@@ -466,6 +468,57 @@ fn axis_by_band(all: &[Drive], law: ContactLaw<f64>, typical: [f64; 2]) {
             band_name(lo, hi),
             mean(&toe) * 1e3,
             toe.len()
+        );
+    }
+}
+
+/// Could noise in the reported face-to-path alone explain TrackMan's flat axis? With noise
+/// in the regressor only, the least-squares slope `b` of the axis on face-to-path is
+/// attenuated and the reverse regression's inverse `b/R²` over-states the true slope; with
+/// noise in both, the true slope lies between them (Frisch's bounds; e.g. Fuller,
+/// *Measurement Error Models*, 1987, §1.1.3). A model slope above `b/R²` cannot be reached
+/// by the face-to-path's noise, whatever its size. Per subset: rows, `b`, `R²`, `b/R²`, and
+/// the model's own slope on the same rows (plain least squares, with an intercept).
+fn errors_in_variables(rows: &[BandRow]) {
+    let fit = |x: &[f64], y: &[f64]| -> (f64, f64) {
+        let (mx, my) = (mean(x), mean(y));
+        let sxx: f64 = x.iter().map(|v| (v - mx).powi(2)).sum();
+        let syy: f64 = y.iter().map(|v| (v - my).powi(2)).sum();
+        let sxy: f64 = x.iter().zip(y).map(|(a, b)| (a - mx) * (b - my)).sum();
+        (sxy / sxx, sxy * sxy / (sxx * syy))
+    };
+    println!(
+        "\n### Face-to-path noise as the cause? TrackMan's axis slope and its errors-in-variables bound against the model's slope\n"
+    );
+    println!(
+        "| rows | n | TrackMan's axis per ° of face-to-path (least squares) | R² | upper bound b/R² | the model's slope, same rows |"
+    );
+    println!("|---|---|---|---|---|---|");
+    let mut subsets: Vec<(String, Vec<&BandRow>)> = vec![
+        ("all".into(), rows.iter().collect()),
+        ("indoors".into(), rows.iter().filter(|r| !r.0).collect()),
+        (
+            "tracked outdoors".into(),
+            rows.iter().filter(|r| r.0).collect(),
+        ),
+    ];
+    for s in 0..=rows.iter().map(|r| r.5).max().unwrap_or(0) {
+        subsets.push((
+            format!("session {s}, indoors"),
+            rows.iter().filter(|r| !r.0 && r.5 == s).collect(),
+        ));
+    }
+    for (name, v) in subsets {
+        if v.len() < 30 {
+            continue;
+        }
+        let x: Vec<f64> = v.iter().map(|r| r.1).collect();
+        let (b, r2) = fit(&x, &v.iter().map(|r| r.2).collect::<Vec<f64>>());
+        let (bm, _) = fit(&x, &v.iter().map(|r| r.3).collect::<Vec<f64>>());
+        println!(
+            "| {name} | {} | {b:.2} | {r2:.2} | {:.2} | {bm:.2} |",
+            v.len(),
+            b / r2
         );
     }
 }
