@@ -414,13 +414,29 @@ fn band_name(lo: f64, hi: f64) -> String {
     }
 }
 
-/// A row of [`axis_by_band`]: tracked outdoors, face-to-path (°), TrackMan's and the model's
-/// axis (°), the strike toward the toe (m) when measured, the session block.
-type BandRow = (bool, f64, f64, f64, Option<f64>, usize);
+/// A row of [`axis_by_band`]: TrackMan's data and the default impact's on one drive.
+struct BandRow {
+    outdoors: bool,
+    /// Face-to-path (°) of the club data.
+    ftp: f64,
+    /// Spin loft (°): dynamic loft less attack.
+    spin_loft: f64,
+    /// TrackMan's and the model's spin axis (°).
+    axis_tm: f64,
+    axis_model: f64,
+    /// TrackMan's and the model's spin (rpm).
+    spin_tm: f64,
+    spin_model: f64,
+    /// The strike toward the toe (m), when measured.
+    toe_m: Option<f64>,
+    /// The session block.
+    session: usize,
+}
 
 /// TrackMan's and the model's axis by face-to-path band, indoors and outdoors (all rows
 /// with a full delivery and a plausible launch; the model at the measured strike location
-/// when there is one), with the mean strike location toward the toe where measured.
+/// when there is one), with the mean strike location toward the toe where measured; then
+/// the spin loft and the spin in the same bands.
 fn axis_by_band(all: &[Drive], law: ContactLaw<f64>, typical: [f64; 2]) {
     let rows: Vec<BandRow> = all
         .par_iter()
@@ -428,17 +444,28 @@ fn axis_by_band(all: &[Drive], law: ContactLaw<f64>, typical: [f64; 2]) {
             let tm = single_drives::observed(d)?;
             let club = d.full_delivery()?;
             let model = single_drives::predict(d, law, true, typical).ok()?;
-            Some((
-                d.tracked_outdoors(),
-                club[4] - club[2],
-                tm[4],
-                model[4],
-                d.strike_m.map(|s| s[0]),
-                d.session(),
-            ))
+            Some(BandRow {
+                outdoors: d.tracked_outdoors(),
+                ftp: club[4] - club[2],
+                spin_loft: club[3] - club[1],
+                axis_tm: tm[4],
+                axis_model: model[4],
+                spin_tm: tm[3],
+                spin_model: model[3],
+                toe_m: d.strike_m.map(|s| s[0]),
+                session: d.session(),
+            })
         })
         .collect();
     errors_in_variables(&rows);
+    let of = |out: bool, lo: f64, hi: f64| -> Vec<&BandRow> {
+        rows.iter()
+            .filter(|r| r.outdoors == out && (lo..hi).contains(&r.ftp))
+            .collect()
+    };
+    let m = |v: &[&BandRow], k: fn(&BandRow) -> f64| -> f64 {
+        mean(&v.iter().map(|r| k(r)).collect::<Vec<f64>>())
+    };
     println!(
         "\n### TrackMan's and the model's axis by face-to-path band, indoors and tracked outdoors (all rows with a full delivery and a plausible launch)\n"
     );
@@ -447,20 +474,18 @@ fn axis_by_band(all: &[Drive], law: ContactLaw<f64>, typical: [f64; 2]) {
     );
     println!("|---|---|---|---|---|---|");
     for (lo, hi) in BANDS {
-        let of = |out: bool| -> Vec<&BandRow> {
-            rows.iter()
-                .filter(|r| r.0 == out && (lo..hi).contains(&r.1))
-                .collect()
-        };
         let cell = |v: &[&BandRow]| -> [String; 2] {
-            let m = |k: fn(&BandRow) -> f64| mean(&v.iter().map(|r| k(r)).collect::<Vec<f64>>());
             [
-                format!("{}, {:+.1}°", v.len(), m(|r| r.1)),
-                format!("{:+.1} / {:+.1}", m(|r| r.2), m(|r| r.3)),
+                format!("{}, {:+.1}°", v.len(), m(v, |r| r.ftp)),
+                format!(
+                    "{:+.1} / {:+.1}",
+                    m(v, |r| r.axis_tm),
+                    m(v, |r| r.axis_model)
+                ),
             ]
         };
-        let (inside, outside) = (of(false), of(true));
-        let toe: Vec<f64> = inside.iter().filter_map(|r| r.4).collect();
+        let (inside, outside) = (of(false, lo, hi), of(true, lo, hi));
+        let toe: Vec<f64> = inside.iter().filter_map(|r| r.toe_m).collect();
         let [ni, ai] = cell(&inside);
         let [no, ao] = cell(&outside);
         println!(
@@ -469,6 +494,24 @@ fn axis_by_band(all: &[Drive], law: ContactLaw<f64>, typical: [f64; 2]) {
             mean(&toe) * 1e3,
             toe.len()
         );
+    }
+    println!(
+        "\n### The spin loft and the spin by the same bands: TrackMan's spin against the model's from the club data\n"
+    );
+    println!(
+        "| face-to-path | indoors: spin loft (mean °) | TrackMan / model spin (mean rpm) | outdoors: spin loft (mean °) | TrackMan / model spin (mean rpm) |"
+    );
+    println!("|---|---|---|---|---|");
+    for (lo, hi) in BANDS {
+        let cell = |v: &[&BandRow]| -> [String; 2] {
+            [
+                format!("{:.1}", m(v, |r| r.spin_loft)),
+                format!("{:.0} / {:.0}", m(v, |r| r.spin_tm), m(v, |r| r.spin_model)),
+            ]
+        };
+        let [li, si] = cell(&of(false, lo, hi));
+        let [lo_, so] = cell(&of(true, lo, hi));
+        println!("| {} | {li} | {si} | {lo_} | {so} |", band_name(lo, hi));
     }
 }
 
@@ -496,25 +539,30 @@ fn errors_in_variables(rows: &[BandRow]) {
     println!("|---|---|---|---|---|---|");
     let mut subsets: Vec<(String, Vec<&BandRow>)> = vec![
         ("all".into(), rows.iter().collect()),
-        ("indoors".into(), rows.iter().filter(|r| !r.0).collect()),
+        (
+            "indoors".into(),
+            rows.iter().filter(|r| !r.outdoors).collect(),
+        ),
         (
             "tracked outdoors".into(),
-            rows.iter().filter(|r| r.0).collect(),
+            rows.iter().filter(|r| r.outdoors).collect(),
         ),
     ];
-    for s in 0..=rows.iter().map(|r| r.5).max().unwrap_or(0) {
+    for s in 0..=rows.iter().map(|r| r.session).max().unwrap_or(0) {
         subsets.push((
             format!("session {s}, indoors"),
-            rows.iter().filter(|r| !r.0 && r.5 == s).collect(),
+            rows.iter()
+                .filter(|r| !r.outdoors && r.session == s)
+                .collect(),
         ));
     }
     for (name, v) in subsets {
         if v.len() < 30 {
             continue;
         }
-        let x: Vec<f64> = v.iter().map(|r| r.1).collect();
-        let (b, r2) = fit(&x, &v.iter().map(|r| r.2).collect::<Vec<f64>>());
-        let (bm, _) = fit(&x, &v.iter().map(|r| r.3).collect::<Vec<f64>>());
+        let x: Vec<f64> = v.iter().map(|r| r.ftp).collect();
+        let (b, r2) = fit(&x, &v.iter().map(|r| r.axis_tm).collect::<Vec<f64>>());
+        let (bm, _) = fit(&x, &v.iter().map(|r| r.axis_model).collect::<Vec<f64>>());
         println!(
             "| {name} | {} | {b:.2} | {r2:.2} | {:.2} | {bm:.2} |",
             v.len(),
