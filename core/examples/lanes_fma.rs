@@ -130,9 +130,10 @@ fn main() {
             return;
         }
         #[allow(unsafe_code)]
-        // SAFETY: AVX-512 F and DQ were just detected.
-        let wide = unsafe { fma.with_avx512_unchecked() };
-        fma = wide;
+        {
+            // SAFETY: AVX-512 F and DQ were just detected.
+            fma = unsafe { fma.with_avx512_unchecked() };
+        }
         println!("on the AVX-512 packs (eight lanes)");
     }
     let ball = Ball::standard();

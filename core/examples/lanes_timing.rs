@@ -114,20 +114,13 @@ fn main() {
     let avx512 = cpu
         .filter(|_| is_x86_feature_detected!("avx512f") && is_x86_feature_detected!("avx512dq"))
         .map(|c| unsafe { c.with_avx512_unchecked() });
-    for (name, cpu) in [
-        ("avx512", avx512),
-        ("avx512fma", avx512.filter(|_| fma.is_some())),
-    ] {
+    #[allow(unsafe_code)]
+    // SAFETY: FMA was detected (and AVX-512 F has the fused multiply–adds).
+    let avx512_fma = avx512
+        .filter(|_| fma.is_some())
+        .map(|c| unsafe { c.with_fma_unchecked() });
+    for (name, cpu) in [("avx512", avx512), ("avx512fma", avx512_fma)] {
         let Some(cpu) = cpu else { continue };
-        let cpu = if name == "avx512fma" {
-            #[allow(unsafe_code)]
-            // SAFETY: FMA was detected (and AVX-512 F has the fused multiply–adds).
-            unsafe {
-                cpu.with_fma_unchecked()
-            }
-        } else {
-            cpu
-        };
         time(name, &|| {
             let mut c = 0.0;
             lanes::fly_each_on(Some(cpu), &shots, &integrator, |_, r| {

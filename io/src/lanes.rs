@@ -19,16 +19,15 @@ use carry_core::{FlightOutcome, Integrator, Result};
 /// else `None`.
 #[must_use]
 pub fn cpu() -> Option<Avx> {
+    let avx = cpu_exact()?;
     #[cfg(target_arch = "x86_64")]
-    if let Some(avx) = cpu_exact()
-        && std::is_x86_feature_detected!("fma")
-    {
+    if std::is_x86_feature_detected!("fma") {
         // SAFETY: `with_fma_unchecked` requires a CPU with FMA, which
         // `is_x86_feature_detected!("fma")` has just confirmed.
         #[allow(unsafe_code)]
         return Some(unsafe { avx.with_fma_unchecked() });
     }
-    cpu_exact()
+    Some(avx)
 }
 
 /// The AVX token without FMA (the packs whose results are the scalar path's bit for bit)

@@ -83,6 +83,68 @@ macro_rules! avx512 {
     };
 }
 
+/// The [`Pack`] methods both AVX-512 packs write the same way, each one intrinsic on the
+/// register: broadcast, lane access, square root, absolute value, the compares (a
+/// `__mmask` widened to a pack), the blend (the mask narrowed back, `$k`) and the mask of
+/// lane bits (`$movm` widens a `__mmask`; bits past the pack's lanes are not lanes).
+macro_rules! avx512_pack_methods {
+    (
+        $scalar:ty, $n:literal, $bits:ty, $set1:ident, $sqrt:ident, $abs:ident,
+        $cmp:ident, $blend:ident, $movm:ident, $from_int:ident
+    ) => {
+        #[inline(always)]
+        fn splat(x: $scalar) -> Self {
+            Self(avx512!($set1(x)))
+        }
+        #[inline(always)]
+        fn get(&self, l: usize) -> $scalar {
+            self.lanes()[l % $n]
+        }
+        #[inline(always)]
+        fn set(&mut self, l: usize, x: $scalar) {
+            self.lanes_mut()[l % $n] = x;
+        }
+        #[inline(always)]
+        fn sqrt(self) -> Self {
+            Self(avx512!($sqrt(self.0)))
+        }
+        #[inline(always)]
+        fn abs(self) -> Self {
+            Self(avx512!($abs(self.0)))
+        }
+        #[inline(always)]
+        fn lt(self, o: Self) -> Self {
+            Self::mask(avx512!($cmp::<_CMP_LT_OQ>(self.0, o.0)).into())
+        }
+        #[inline(always)]
+        fn le(self, o: Self) -> Self {
+            Self::mask(avx512!($cmp::<_CMP_LE_OQ>(self.0, o.0)).into())
+        }
+        #[inline(always)]
+        fn ne(self, o: Self) -> Self {
+            // Unordered: true where either is NaN (IEEE `!=`, as the AVX packs' `ne`).
+            Self::mask(avx512!($cmp::<_CMP_NEQ_UQ>(self.0, o.0)).into())
+        }
+        #[inline(always)]
+        fn blend(self, t: Self, f: Self) -> Self {
+            // `_mm512_mask_blend_*(k, a, b)` takes `b` where `k` is set.
+            Self(avx512!($blend(self.k(), f.0, t.0)))
+        }
+        #[inline(always)]
+        fn bits(self) -> u32 {
+            u32::from(self.k())
+        }
+        #[inline(always)]
+        fn mask(bits: u32) -> Self {
+            // All ones in the lanes whose bit is set (`vpmovm2q`/`vpmovm2d`); the bits past
+            // the pack's lanes are dropped.
+            #[allow(clippy::cast_possible_truncation)]
+            let k = bits as $bits;
+            Self(avx512!($from_int($movm(k))))
+        }
+    };
+}
+
 x86_pack!(
     impl[const FMA: bool] F64x8<FMA>, f64, 8, avx512, _mm512_set1_pd,
     [_mm512_add_pd, _mm512_sub_pd, _mm512_mul_pd, _mm512_div_pd, _mm512_and_pd, _mm512_or_pd, _mm512_xor_pd]
@@ -124,56 +186,18 @@ impl<const FMA: bool> Pack for F64x8<FMA> {
             c - self * b
         }
     }
-    #[inline(always)]
-    fn splat(x: f64) -> Self {
-        Self(avx512!(_mm512_set1_pd(x)))
-    }
-    #[inline(always)]
-    fn get(&self, l: usize) -> f64 {
-        self.lanes()[l % 8]
-    }
-    #[inline(always)]
-    fn set(&mut self, l: usize, x: f64) {
-        self.lanes_mut()[l % 8] = x;
-    }
-    #[inline(always)]
-    fn sqrt(self) -> Self {
-        Self(avx512!(_mm512_sqrt_pd(self.0)))
-    }
-    #[inline(always)]
-    fn abs(self) -> Self {
-        Self(avx512!(_mm512_abs_pd(self.0)))
-    }
-    #[inline(always)]
-    fn lt(self, o: Self) -> Self {
-        Self::mask(avx512!(_mm512_cmp_pd_mask::<_CMP_LT_OQ>(self.0, o.0)).into())
-    }
-    #[inline(always)]
-    fn le(self, o: Self) -> Self {
-        Self::mask(avx512!(_mm512_cmp_pd_mask::<_CMP_LE_OQ>(self.0, o.0)).into())
-    }
-    #[inline(always)]
-    fn ne(self, o: Self) -> Self {
-        // Unordered: true where either is NaN (IEEE `!=`, as `F64x4::ne`).
-        Self::mask(avx512!(_mm512_cmp_pd_mask::<_CMP_NEQ_UQ>(self.0, o.0)).into())
-    }
-    #[inline(always)]
-    fn blend(self, t: Self, f: Self) -> Self {
-        // `_mm512_mask_blend_pd(k, a, b)` takes `b` where `k` is set.
-        Self(avx512!(_mm512_mask_blend_pd(self.k(), f.0, t.0)))
-    }
-    #[inline(always)]
-    fn bits(self) -> u32 {
-        u32::from(self.k())
-    }
-    #[inline(always)]
-    fn mask(bits: u32) -> Self {
-        // All ones in the lanes whose bit is set (`vpmovm2q`); bits past the eighth are
-        // not lanes.
-        #[allow(clippy::cast_possible_truncation)]
-        let k = (bits & 0xff) as u8;
-        Self(avx512!(_mm512_castsi512_pd(_mm512_movm_epi64(k))))
-    }
+    avx512_pack_methods!(
+        f64,
+        8,
+        u8,
+        _mm512_set1_pd,
+        _mm512_sqrt_pd,
+        _mm512_abs_pd,
+        _mm512_cmp_pd_mask,
+        _mm512_mask_blend_pd,
+        _mm512_movm_epi64,
+        _mm512_castsi512_pd
+    );
 }
 
 /// Flies `f32` shots as [`super::fly_each`] does, on AVX-512 packs of sixteen lanes.
@@ -211,51 +235,16 @@ impl F32x16 {
 impl Pack for F32x16 {
     type Scalar = f32;
     const LANES: usize = 16;
-    #[inline(always)]
-    fn splat(x: f32) -> Self {
-        Self(avx512!(_mm512_set1_ps(x)))
-    }
-    #[inline(always)]
-    fn get(&self, l: usize) -> f32 {
-        self.lanes()[l % 16]
-    }
-    #[inline(always)]
-    fn set(&mut self, l: usize, x: f32) {
-        self.lanes_mut()[l % 16] = x;
-    }
-    #[inline(always)]
-    fn sqrt(self) -> Self {
-        Self(avx512!(_mm512_sqrt_ps(self.0)))
-    }
-    #[inline(always)]
-    fn abs(self) -> Self {
-        Self(avx512!(_mm512_abs_ps(self.0)))
-    }
-    #[inline(always)]
-    fn lt(self, o: Self) -> Self {
-        Self::mask(avx512!(_mm512_cmp_ps_mask::<_CMP_LT_OQ>(self.0, o.0)).into())
-    }
-    #[inline(always)]
-    fn le(self, o: Self) -> Self {
-        Self::mask(avx512!(_mm512_cmp_ps_mask::<_CMP_LE_OQ>(self.0, o.0)).into())
-    }
-    #[inline(always)]
-    fn ne(self, o: Self) -> Self {
-        // Unordered, as `F64x8::ne`.
-        Self::mask(avx512!(_mm512_cmp_ps_mask::<_CMP_NEQ_UQ>(self.0, o.0)).into())
-    }
-    #[inline(always)]
-    fn blend(self, t: Self, f: Self) -> Self {
-        Self(avx512!(_mm512_mask_blend_ps(self.k(), f.0, t.0)))
-    }
-    #[inline(always)]
-    fn bits(self) -> u32 {
-        u32::from(self.k())
-    }
-    #[inline(always)]
-    fn mask(bits: u32) -> Self {
-        #[allow(clippy::cast_possible_truncation)]
-        let k = (bits & 0xffff) as u16;
-        Self(avx512!(_mm512_castsi512_ps(_mm512_movm_epi32(k))))
-    }
+    avx512_pack_methods!(
+        f32,
+        16,
+        u16,
+        _mm512_set1_ps,
+        _mm512_sqrt_ps,
+        _mm512_abs_ps,
+        _mm512_cmp_ps_mask,
+        _mm512_mask_blend_ps,
+        _mm512_movm_epi32,
+        _mm512_castsi512_ps
+    );
 }
